@@ -1,0 +1,151 @@
+//! The ball carrier's choice: shoot, pass (weighing progress, the receiver's space and the risk of
+//! interception) or dribble towards goal around opponents. Each option gets a value; noise scaled
+//! by the difficulty blurs the values before the best is taken.
+
+use glam::Vec2;
+
+use super::{Analysis, Difficulty, MatchView, Plan};
+use crate::game::kick::shot_target;
+use crate::game::{Kick, KickKind, KickTarget};
+use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
+use crate::player::Player;
+use crate::rng::MatchRng;
+
+/// Distance (m) from `p` to the segment `a`–`b`.
+pub(crate) fn distance_to_segment(p: Vec2, a: Vec2, b: Vec2) -> f32 {
+    let ab = b - a;
+    let t = ((p - a).dot(ab) / ab.length_squared().max(1e-6)).clamp(0.0, 1.0);
+    p.distance(a + ab * t)
+}
+
+/// Nearest active opponent's distance (m) to `at`.
+fn nearest(opponents: &[Player], at: Vec2) -> f32 {
+    opponents.iter().filter(|o| o.active).map(|o| o.position.distance_squared(at)).fold(f32::INFINITY, f32::min).sqrt()
+}
+
+/// Value of a shot from `from` (team frame) in [0, 1]-ish: distance, angle and bodies in the way.
+fn shot_value(from: Vec2, opponents: &[Player], frame: crate::geometry::TeamFrame) -> f32 {
+    let goal = Vec2::new(HALF_LENGTH, 0.0);
+    let d = from.distance(goal);
+    if d > 32.0 || from.x < 10.0 {
+        return 0.0;
+    }
+    let angle = (from.x - (HALF_LENGTH - 30.0)).max(0.0) / 30.0 * (1.0 - (from.y.abs() / 25.0).min(1.0));
+    let mut value = (1.0 - d / 34.0) * (0.4 + 0.6 * angle);
+    for o in opponents.iter().filter(|o| o.active && !o.is_keeper()) {
+        let o = frame.vec2(o.position);
+        if o.x > from.x && distance_to_segment(o, from, goal) < 1.5 {
+            value *= 0.55;
+        }
+    }
+    value
+}
+
+/// The plan for the ball carrier `g`.
+pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, rng: &mut MatchRng) -> Plan {
+    let me = &view.players[g];
+    let frame = analysis.frame;
+    let side = me.side;
+    let mates = view.team(side);
+    let opponents = view.team(side.opponent());
+    let pos_t = frame.vec2(me.position);
+    let goal_t = Vec2::new(HALF_LENGTH, 0.0);
+    let pressure = nearest(opponents, me.position);
+    let noise = difficulty.decision_noise;
+
+    // Shot.
+    let mut best_value = shot_value(pos_t, opponents, frame) * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 };
+    best_value += rng.noise(noise);
+    let keeper_y = opponents.iter().find(|o| o.is_keeper() && o.active).map(|k| k.position.y);
+    let mut target = shot_target(side.attack_sign(), keeper_y, me.position.y);
+    target.y += rng.noise(difficulty.aim_error);
+    let mut best = Plan {
+        kick: Some(Kick { kind: KickKind::Shot, target: KickTarget::Point(target), height: 0.5, power: 0.6 }),
+        ..Plan::go(me.position, 0.0, target - me.position)
+    };
+
+    // Dribble: towards goal, bending away from opponents in front.
+    let mut dir = (goal_t - pos_t).normalize_or(Vec2::X);
+    let mut space = 20.0f32;
+    for o in opponents.iter().filter(|o| o.active) {
+        let rel = frame.vec2(o.position) - pos_t;
+        let d = rel.length();
+        if d < 10.0 && rel.x > -1.0 {
+            space = space.min(d);
+            let side_step = if rel.y > 0.0 { Vec2::new(0.0, -1.0) } else { Vec2::new(0.0, 1.0) };
+            dir += side_step * (1.0 - d / 10.0) * 1.2;
+        }
+    }
+    if pos_t.y.abs() > HALF_WIDTH - 6.0 {
+        dir.y -= pos_t.y.signum() * 0.8;
+    }
+    let dir = dir.normalize_or(Vec2::X);
+    let dribble_value = 0.25 + 0.35 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0) - if pressure < 2.0 { 0.25 } else { 0.0 }
+        + rng.noise(noise);
+    if dribble_value > best_value {
+        best_value = dribble_value;
+        let speed = if space > 6.0 { me.max_speed } else { 5.0 };
+        let to = frame.vec2(pos_t + dir * 6.0);
+        best = Plan { dribble: pressure < 1.8, ..Plan::go(to, speed, to - me.position) };
+    }
+
+    // Passes.
+    for mate in mates {
+        if !mate.active || mate.index == me.index || mate.is_keeper() {
+            continue;
+        }
+        let m_t = frame.vec2(mate.position);
+        let d = m_t.distance(pos_t);
+        if !(5.0..=50.0).contains(&d) {
+            continue;
+        }
+        let lane = opponents
+            .iter()
+            .filter(|o| o.active)
+            .map(|o| distance_to_segment(frame.vec2(o.position), pos_t, m_t))
+            .fold(f32::INFINITY, f32::min);
+        let lane_ok = lane > 1.5 + 0.06 * d;
+        let open = nearest(opponents, mate.position).min(10.0) / 10.0;
+        let progress = (m_t.x - pos_t.x) / 30.0;
+        let closeness = 1.0 - m_t.distance(goal_t) / 110.0;
+        let kind = if d < 25.0 && lane_ok {
+            KickKind::ShortPass
+        } else if lane_ok {
+            KickKind::LongPass
+        } else {
+            KickKind::HighPass
+        };
+        let risk = match kind {
+            KickKind::ShortPass => 0.0,
+            KickKind::LongPass => 0.15,
+            _ => 0.25 + if lane_ok { 0.0 } else { 0.1 },
+        };
+        let value = 0.15 + 0.45 * progress + 0.35 * closeness + 0.3 * open - risk - if d > 35.0 { 0.15 } else { 0.0 }
+            + if pressure < 2.5 { 0.15 } else { 0.0 }
+            + rng.noise(noise);
+        if value > best_value + 0.05 {
+            best_value = value;
+            let lead = mate.velocity * (d / 18.0);
+            let aim = mate.position + lead;
+            best = Plan {
+                kick: Some(Kick { kind, target: KickTarget::Point(aim), height: 0.0, power: 0.5 }),
+                ..Plan::go(me.position, 0.0, aim - me.position)
+            };
+        }
+    }
+    let _ = best_value;
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn segment_distance() {
+        let d = distance_to_segment(Vec2::new(5.0, 3.0), Vec2::ZERO, Vec2::new(10.0, 0.0));
+        assert!((d - 3.0).abs() < 1e-5);
+        let d = distance_to_segment(Vec2::new(-4.0, 3.0), Vec2::ZERO, Vec2::new(10.0, 0.0));
+        assert!((d - 5.0).abs() < 1e-5);
+    }
+}

@@ -1,0 +1,50 @@
+//! Difficulty θ ∈ [0, 1]: how quickly and how well a team's AI decides (GRF: easy 0.05, medium
+//! 0.6, hard 0.95; grf.md §2.3, §7.6).
+
+/// The parameters a team's θ sets. All are smooth in θ.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Difficulty {
+    /// θ itself.
+    pub theta: f32,
+    /// Ticks between decisions: 5 + 10·(1 − θ), i.e. 50 ms at θ = 1 to 150 ms at θ = 0. GRF adds
+    /// (1 − θ)·100 ms of reaction time (grf.md §7.6).
+    pub reaction_ticks: u16,
+    /// Distance (m) within which the nearest player presses the ball carrier: 35·(0.3 + 0.7·θ)
+    /// (GRF scales its pressing threshold by 0.3 + 0.7·θ).
+    pub hunt_distance: f32,
+    /// Amplitude of the noise added to the value of each option (pass, shot, dribble): poor
+    /// decisions at low θ. Zero in deterministic scenarios (the match RNG returns no noise).
+    pub decision_noise: f32,
+    /// Aim error scale for AI shots and passes at the goal (m of lateral error at 20 m).
+    pub aim_error: f32,
+}
+
+impl Difficulty {
+    /// Parameters for θ (clamped into [0, 1]).
+    pub fn new(theta: f32) -> Difficulty {
+        let theta = theta.clamp(0.0, 1.0);
+        Difficulty {
+            theta,
+            reaction_ticks: (5.0 + 10.0 * (1.0 - theta)).round() as u16,
+            hunt_distance: 35.0 * (0.3 + 0.7 * theta),
+            decision_noise: 0.45 * (1.0 - theta) + 0.03,
+            aim_error: 0.4 + 1.6 * (1.0 - theta),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn harder_means_faster_and_sharper() {
+        let easy = Difficulty::new(0.05);
+        let hard = Difficulty::new(0.95);
+        assert!(hard.reaction_ticks < easy.reaction_ticks);
+        assert!(hard.hunt_distance > easy.hunt_distance);
+        assert!(hard.decision_noise < easy.decision_noise);
+        assert_eq!(Difficulty::new(1.0).reaction_ticks, 5);
+        assert_eq!(Difficulty::new(7.0).theta, 1.0);
+    }
+}

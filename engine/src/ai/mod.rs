@@ -1,0 +1,183 @@
+//! The built-in AI: one per team, driving every player no agent controls (goalkeepers included).
+//!
+//! Every few ticks (the team's reaction time) the AI analyses the ball's path and who can reach it
+//! first, then gives each player a plan: hold the team shape ([`team_shape`]), press or cover
+//! ([`pressing`]), carry, pass or shoot ([`ball_carrier`]), keep goal ([`goalkeeper`]) or take a
+//! set piece ([`set_piece`]). Each tick the plans become [`PlayerInput`]s. Difficulty θ ∈ [0, 1]
+//! ([`difficulty`]) sets reaction time, pressing reach and decision noise.
+
+pub mod ball_carrier;
+pub mod difficulty;
+pub mod goalkeeper;
+pub mod prediction;
+pub mod pressing;
+pub mod set_piece;
+pub mod team_shape;
+
+use std::ops::Range;
+
+use glam::Vec2;
+
+pub use difficulty::Difficulty;
+pub use prediction::BallPath;
+
+use crate::game::{GameMode, Kick, PlayerInput};
+use crate::geometry::{Side, TeamFrame};
+use crate::physics::Ball;
+use crate::player::{Player, WALK_SPEED};
+use crate::rng::MatchRng;
+
+/// What the AI sees of the match (read-only).
+pub struct MatchView<'a> {
+    /// All players, left team first.
+    pub players: &'a [Player],
+    /// Global index ranges of the two teams.
+    pub ranges: &'a [Range<usize>; 2],
+    /// The ball.
+    pub ball: &'a Ball,
+    /// Ball owner (global index).
+    pub owner: Option<usize>,
+    /// Last player to touch the ball (global index).
+    pub last_touch: Option<usize>,
+    /// Game mode.
+    pub mode: GameMode,
+    /// Set-piece taker (global index) while `mode` is not Normal.
+    pub taker: Option<usize>,
+    /// Ticks the current set piece has waited.
+    pub set_piece_ticks: u32,
+    /// In-play tick counter.
+    pub tick: u64,
+}
+
+impl MatchView<'_> {
+    /// One team's players.
+    pub fn team(&self, side: Side) -> &[Player] {
+        &self.players[self.ranges[side.index()].clone()]
+    }
+
+    /// Which team has the ball at a player's feet.
+    pub fn owner_side(&self) -> Option<Side> {
+        self.owner.map(|g| self.players[g].side)
+    }
+}
+
+/// A player's current plan; turned into a [`PlayerInput`] every tick.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Plan {
+    /// Where to go (m, global frame).
+    pub target: Vec2,
+    /// How fast to go there (m/s); the player slows down on arrival.
+    pub speed: f32,
+    /// Where to look while standing (global direction).
+    pub look: Vec2,
+    /// Hold the dribble button.
+    pub dribble: bool,
+    /// A kick to make now (sent once).
+    pub kick: Option<Kick>,
+    /// Slide (or, for a keeper, dive) now (sent once).
+    pub slide: bool,
+}
+
+impl Plan {
+    /// Go to `target` at `speed`, looking at `look`.
+    pub fn go(target: Vec2, speed: f32, look: Vec2) -> Plan {
+        Plan { target, speed, look, ..Plan::default() }
+    }
+}
+
+/// Shared analysis of one decision: the ball's path and who of this team reaches it first.
+pub struct Analysis {
+    /// Team frame of the deciding team.
+    pub frame: TeamFrame,
+    /// Predicted ball path.
+    pub path: BallPath,
+    /// This team's fastest player to the ball (global index), its time (s) and meeting point.
+    pub chaser: Option<(usize, f32, Vec2)>,
+    /// Second fastest (global index).
+    pub second: Option<usize>,
+    /// The opponents' fastest time to the ball (s).
+    pub opponent_time: f32,
+}
+
+/// One team's built-in AI.
+#[derive(Clone, Debug)]
+pub struct TeamAi {
+    side: Side,
+    difficulty: Difficulty,
+    plans: Vec<Plan>,
+    next_think: u64,
+    /// Tick at which this team's keeper took hold of the ball.
+    keeper_since: Option<u64>,
+}
+
+impl TeamAi {
+    /// The AI of `side` at difficulty `theta` for `players` players.
+    pub fn new(side: Side, theta: f32, players: usize) -> TeamAi {
+        TeamAi { side, difficulty: Difficulty::new(theta), plans: vec![Plan::default(); players], next_think: 0, keeper_since: None }
+    }
+
+    /// The difficulty in force.
+    pub fn difficulty(&self) -> &Difficulty {
+        &self.difficulty
+    }
+
+    /// Re-plans when the reaction time has passed, then writes this tick's inputs for the team's
+    /// players that no agent drives. `inputs` and `agent_driven` are the team's slices.
+    pub(crate) fn drive(&mut self, view: &MatchView, rng: &mut MatchRng, inputs: &mut [PlayerInput], agent_driven: &[bool]) {
+        let first = view.ranges[self.side.index()].start;
+        // An event that needs an instant reaction: the ball changed hands or a set piece began.
+        if view.tick >= self.next_think {
+            self.think(view, rng);
+            self.next_think = view.tick + u64::from(self.difficulty.reaction_ticks);
+        }
+        for (i, plan) in self.plans.iter_mut().enumerate() {
+            if agent_driven[i] {
+                continue;
+            }
+            let p = &view.players[first + i];
+            let to = plan.target - p.position;
+            let dist = to.length();
+            // Arrive: slow down within the last metres so players settle on their spots.
+            let speed = plan.speed.min(dist * 2.5);
+            let velocity = if dist > 0.15 { to * (speed / dist) } else { Vec2::ZERO };
+            inputs[i] = PlayerInput {
+                velocity,
+                look: plan.look,
+                dribble: plan.dribble,
+                kick: plan.kick.take(),
+                slide: std::mem::take(&mut plan.slide),
+            };
+        }
+    }
+
+    fn think(&mut self, view: &MatchView, rng: &mut MatchRng) {
+        let side = self.side;
+        let analysis = prediction::analyse(view, side, &self.difficulty);
+        let range = view.ranges[side.index()].clone();
+        let keeper_has_ball = view.owner.is_some_and(|o| view.players[o].side == side && view.players[o].is_keeper());
+        self.keeper_since = if keeper_has_ball { Some(self.keeper_since.unwrap_or(view.tick)) } else { None };
+        for g in range.clone() {
+            let i = g - range.start;
+            let p = &view.players[g];
+            let ball = view.ball.xy();
+            let plan = if !p.active || p.lazy {
+                Plan::go(p.position, 0.0, ball - p.position)
+            } else if view.mode != GameMode::Normal {
+                set_piece::plan(view, g, &analysis, &self.difficulty, rng)
+            } else if view.owner == Some(g) && p.is_keeper() {
+                goalkeeper::distribute(view, g, view.tick - self.keeper_since.unwrap_or(view.tick), &analysis)
+            } else if view.owner == Some(g) {
+                ball_carrier::plan(view, g, &analysis, &self.difficulty, rng)
+            } else if p.is_keeper() {
+                goalkeeper::plan(view, g, &analysis, &self.difficulty)
+            } else if let Some(plan) = pressing::plan(view, g, &analysis, &self.difficulty) {
+                plan
+            } else {
+                let target = team_shape::position(view, g, analysis.frame);
+                let d = target.distance(p.position);
+                Plan::go(target, if d > 10.0 { p.max_speed * 0.9 } else { WALK_SPEED }, ball - p.position)
+            };
+            self.plans[i] = plan;
+        }
+    }
+}

@@ -1,0 +1,41 @@
+//! Pressing and covering: when the team does not have the ball, the player who reaches it first
+//! goes for it (within the difficulty's hunt distance) and the next one covers between the ball
+//! and the goal.
+
+use glam::Vec2;
+
+use super::{Analysis, Difficulty, MatchView, Plan};
+use crate::geometry::pitch::HALF_LENGTH;
+
+/// A pressing or covering plan for player `g`, or `None` when he should hold his place.
+pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty) -> Option<Plan> {
+    let p = &view.players[g];
+    let ball = view.ball.xy();
+    let ours = view.owner_side() == Some(p.side);
+    if ours {
+        return None;
+    }
+    let (chaser, _, meet) = analysis.chaser?;
+    if chaser == g {
+        let loose = view.owner.is_none();
+        if loose || p.position.distance(ball) <= difficulty.hunt_distance {
+            let target = match view.owner {
+                // Close down the carrier: aim a little ahead of him, goal-side.
+                Some(o) => {
+                    let carrier = &view.players[o];
+                    let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
+                    carrier.position + carrier.velocity * 0.3 + (own_goal - carrier.position).normalize_or_zero() * 0.6
+                }
+                None => meet,
+            };
+            return Some(Plan::go(target, p.max_speed, ball - p.position));
+        }
+    }
+    if analysis.second == Some(g) && view.owner.is_some() && difficulty.theta >= 0.3 {
+        // Cover: between the ball and our goal, six metres off the ball.
+        let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
+        let target = ball + (own_goal - ball).normalize_or_zero() * 6.0;
+        return Some(Plan::go(target, p.max_speed * 0.85, ball - p.position));
+    }
+    None
+}

@@ -1,0 +1,75 @@
+//! Set pieces: the taker waits a moment and then plays the ball (short throw-ins, crosses into the
+//! box from corners, goal kicks like a keeper's distribution); the others take up their places.
+
+use glam::Vec2;
+
+use super::{goalkeeper, team_shape, Analysis, Difficulty, MatchView, Plan};
+use crate::game::{GameMode, Kick, KickKind, KickTarget};
+use crate::geometry::pitch::HALF_LENGTH;
+use crate::player::WALK_SPEED;
+use crate::rng::MatchRng;
+
+/// Plan for player `g` while a set piece is pending.
+pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, rng: &mut MatchRng) -> Plan {
+    let me = &view.players[g];
+    let ball = view.ball.xy();
+    if view.taker == Some(g) {
+        let wait = 50 + (30.0 * (1.0 - difficulty.theta)) as u32;
+        if view.set_piece_ticks < wait {
+            return Plan::go(me.position, 0.0, analysis.frame.vec2(Vec2::X));
+        }
+        return take(view, g, analysis, rng);
+    }
+    if me.is_keeper() {
+        return goalkeeper::plan(view, g, analysis, difficulty);
+    }
+    let mut target = team_shape::position(view, g, analysis.frame);
+    let ours = view.taker.is_some_and(|t| view.players[t].side == me.side);
+    if ours && view.mode == GameMode::Corner && (me.role.is_attacker() || me.role == crate::player::Role::CB) {
+        // Attack the cross: spread across the six-yard box and the penalty spot.
+        let y = (me.index as f32 * 2.3) % 12.0 - 6.0;
+        target = analysis.frame.vec2(Vec2::new(HALF_LENGTH - 9.0, y));
+    }
+    let d = target.distance(me.position);
+    Plan::go(target, if d > 8.0 { me.max_speed * 0.9 } else { WALK_SPEED }, ball - me.position)
+}
+
+fn take(view: &MatchView, g: usize, analysis: &Analysis, rng: &mut MatchRng) -> Plan {
+    let me = &view.players[g];
+    let frame = analysis.frame;
+    match view.mode {
+        GameMode::GoalKick => goalkeeper::distribute(view, g, u64::MAX, analysis),
+        GameMode::Corner => {
+            let aim = frame.vec2(Vec2::new(HALF_LENGTH - 8.0 + rng.noise(2.0), rng.noise(5.0)));
+            let receiver = view
+                .team(me.side)
+                .iter()
+                .filter(|m| m.active && m.index != me.index && !m.is_keeper())
+                .min_by(|a, b| a.position.distance_squared(aim).total_cmp(&b.position.distance_squared(aim)))
+                .map_or(aim, |m| m.position);
+            kick(me.position, KickKind::HighPass, receiver)
+        }
+        _ => {
+            let opponents = view.team(me.side.opponent());
+            let best = view
+                .team(me.side)
+                .iter()
+                .filter(|m| m.active && m.index != me.index && !m.is_keeper())
+                .map(|m| {
+                    let free = opponents.iter().filter(|o| o.active).map(|o| o.position.distance(m.position)).fold(f32::INFINITY, f32::min);
+                    let d = m.position.distance(me.position);
+                    (m.position, free.min(10.0) - 0.15 * d)
+                })
+                .max_by(|a, b| a.1.total_cmp(&b.1));
+            let target = best.map_or(me.position + frame.vec2(Vec2::new(15.0, 0.0)), |b| b.0);
+            kick(me.position, KickKind::ShortPass, target)
+        }
+    }
+}
+
+fn kick(from: Vec2, kind: KickKind, target: Vec2) -> Plan {
+    Plan {
+        kick: Some(Kick { kind, target: KickTarget::Point(target), height: 0.0, power: 0.5 }),
+        ..Plan::go(from, 0.0, target - from)
+    }
+}

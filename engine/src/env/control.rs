@@ -1,0 +1,78 @@
+//! Which player each agent controller drives (grf.md §7.6).
+//!
+//! With as many controllers as controllable players the mapping is fixed: controller i drives the
+//! i-th controllable player. With fewer ("dynamic selection"), control follows the ball: to the
+//! team's designated player when he has the ball or takes a set piece, or when he could reach the
+//! ball more than three times sooner than the controlled player farthest from it. Goalkeepers are
+//! never selected automatically.
+
+use crate::game::Match;
+use crate::geometry::Side;
+
+/// The player of `side` the team would hand control to: the ball owner if he is on this team,
+/// else the player nearest the ball in time (goalkeepers only when no one else can be controlled).
+pub(crate) fn designated(game: &Match, side: Side) -> Option<usize> {
+    let team = game.team(side);
+    if let Some((s, i)) = game.owner() {
+        if s == side && selectable(game, side, i) {
+            return Some(i);
+        }
+    }
+    let ball = game.ball().xy();
+    let time = |i: usize| team[i].position.distance(ball) / team[i].max_speed.max(0.1);
+    let any_outfield = (0..team.len()).any(|i| selectable(game, side, i));
+    (0..team.len())
+        .filter(|&i| team[i].active && team[i].controllable && (!any_outfield || !team[i].is_keeper()))
+        .min_by(|&a, &b| time(a).total_cmp(&time(b)))
+}
+
+fn selectable(game: &Match, side: Side, i: usize) -> bool {
+    let p = &game.team(side)[i];
+    p.active && p.controllable && !p.is_keeper()
+}
+
+/// Assigns players to the `controlled` slots of `side` at the start of an episode.
+pub(crate) fn initial(game: &Match, side: Side, controlled: &mut [usize]) {
+    let team = game.team(side);
+    let controllable: Vec<usize> = (0..team.len()).filter(|&i| team[i].controllable).collect();
+    if controllable.len() == controlled.len() {
+        controlled.copy_from_slice(&controllable);
+        return;
+    }
+    // Dynamic: the nearest players to the ball (outfield first).
+    let ball = game.ball().xy();
+    let mut order = controllable;
+    order.sort_by(|&a, &b| {
+        let key = |i: usize| (team[i].is_keeper(), team[i].position.distance_squared(ball));
+        let (ka, kb) = (key(a), key(b));
+        ka.0.cmp(&kb.0).then(ka.1.total_cmp(&kb.1))
+    });
+    controlled.copy_from_slice(&order[..controlled.len()]);
+}
+
+/// Moves dynamic control to the designated player when GRF's rules say so. `fixed` is true when
+/// every controllable player has a controller.
+pub(crate) fn update(game: &Match, side: Side, controlled: &mut [usize], fixed: bool) {
+    if fixed || controlled.is_empty() {
+        return;
+    }
+    let Some(d) = designated(game, side) else { return };
+    if controlled.contains(&d) {
+        return;
+    }
+    let team = game.team(side);
+    let ball = game.ball().xy();
+    let time = |i: usize| team[i].position.distance(ball) / team[i].max_speed.max(0.1);
+    // The controlled player who is worst placed gives up control.
+    let (slot, worst) = controlled
+        .iter()
+        .enumerate()
+        .max_by(|a, b| time(*a.1).total_cmp(&time(*b.1)))
+        .map(|(s, &i)| (s, i))
+        .expect("controlled is not empty");
+    let has_ball = game.owner() == Some((side, d));
+    let worst_unusable = !team[worst].active;
+    if has_ball || worst_unusable || time(d) * 3.0 < time(worst) {
+        controlled[slot] = d;
+    }
+}

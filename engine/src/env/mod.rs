@@ -1,0 +1,419 @@
+//! The RL episode around a [`Match`]: controllers, sticky actions, 10 ticks per step, rewards,
+//! end conditions and observations, with GRF's semantics (shared/reference/grf.md §5–§7).
+
+mod config;
+mod control;
+mod end;
+mod sticky;
+
+use glam::Vec2;
+use serde::{Deserialize, Serialize};
+
+pub use config::EnvConfig;
+pub use sticky::{Press, StickyState};
+
+use crate::error::EngineError;
+use crate::game::{Action, ActionSet, GameMode, Kick, KickTarget, Match, PlayerInput};
+use crate::geometry::Side;
+use crate::obs::RawObservation;
+use crate::player::{DRIBBLE_SPEED, WALK_SPEED};
+use crate::reward::{scoring_reward, CheckpointTracker};
+use crate::scenario::Scenario;
+use end::EndTracker;
+
+/// Ticks of play per env step: 10 × 10 ms = 0.1 s (GRF `physics_steps_per_frame`, grf.md §7.1).
+pub const TICKS_PER_STEP: u32 = 10;
+/// Gauge of a button pressed for one step (ms): buttons auto-release after each step (grf.md §5.3).
+const ONE_STEP_GAUGE_MS: f32 = 100.0;
+/// Most ticks one step may simulate (play plus dead time), a guard against a stuck restart.
+const MAX_TICKS_PER_STEP: u32 = 2_000;
+
+/// How a step ended.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct StepOutcome {
+    /// The scenario's end conditions hold (goal, out of play, possession change).
+    pub terminated: bool,
+    /// The time limit was reached (`game_duration + 1` steps).
+    pub truncated: bool,
+}
+
+/// Per-step information, as GRF's `info` plus the per-term rewards.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct StepInfo {
+    /// Goals `[left, right]`.
+    pub score: [u32; 2],
+    /// Steps left (`game_duration + 1` at reset).
+    pub steps_left: u32,
+    /// Game mode after the step.
+    pub game_mode: GameMode,
+    /// The left team's scoring reward this step (+1, -1 or 0; GRF `score_reward`).
+    pub score_reward: f32,
+    /// Checkpoint reward paid this step, summed over controllers.
+    pub checkpoint_reward: f32,
+    /// Steps taken this episode.
+    pub steps: u32,
+    /// 0-based episode index since the last seeding.
+    pub episode: u64,
+}
+
+/// One agent controller: a side and the player it drives.
+#[derive(Clone, Copy, Debug)]
+struct Controller {
+    side: Side,
+    sticky: StickyState,
+}
+
+/// A reinforcement-learning environment over one [`Scenario`].
+#[derive(Clone, Debug)]
+pub struct Env {
+    scenario: Scenario,
+    config: EnvConfig,
+    seed: u64,
+    episode: u64,
+    fresh: bool,
+    game: Match,
+    controllers: Vec<Controller>,
+    /// Player (index in team) driven by each controller, left controllers first.
+    controlled: Vec<usize>,
+    fixed_control: [bool; 2],
+    observations: Vec<RawObservation>,
+    rewards: Vec<f32>,
+    checkpoints: Vec<CheckpointTracker>,
+    end: EndTracker,
+    info: StepInfo,
+    steps: u32,
+    done: bool,
+    score_diff: i32,
+    /// GRF's anti-stalling counter: steps in a row that ended with a set piece pending.
+    waiting_for_game: u32,
+}
+
+impl Env {
+    /// An environment with the default configuration (one left agent, scoring reward, 19
+    /// actions), reset to its first episode with `seed`.
+    ///
+    /// # Errors
+    /// [`EngineError::InvalidScenario`] when the scenario fails [`Scenario::validate`].
+    pub fn new(scenario: Scenario, seed: u64) -> Result<Env, EngineError> {
+        Env::with_config(scenario, EnvConfig::default(), seed)
+    }
+
+    /// An environment with `config`, reset to its first episode with `seed`.
+    ///
+    /// # Errors
+    /// [`EngineError::InvalidScenario`] for a bad scenario; [`EngineError::InvalidConfig`] when
+    /// more players are to be controlled than a side has controllable players.
+    pub fn with_config(scenario: Scenario, config: EnvConfig, seed: u64) -> Result<Env, EngineError> {
+        scenario.validate()?;
+        let controllable = scenario.controllable_players();
+        let mut agents = [config.left_agents, config.right_agents];
+        for side in 0..2 {
+            if scenario.control_all_players && agents[side] == 1 {
+                agents[side] = controllable[side];
+            }
+            if agents[side] > controllable[side] {
+                return Err(EngineError::InvalidConfig {
+                    reason: format!(
+                        "{} agents asked for the {} team, which has {} controllable players",
+                        agents[side],
+                        Side::from_index(side).name(),
+                        controllable[side]
+                    ),
+                });
+            }
+        }
+        let controllers: Vec<Controller> = (0..agents[0])
+            .map(|_| Controller { side: Side::Left, sticky: StickyState::default() })
+            .chain((0..agents[1]).map(|_| Controller { side: Side::Right, sticky: StickyState::default() }))
+            .collect();
+        let n = controllers.len();
+        let game = Match::new(&scenario, 0, seed);
+        let mut env = Env {
+            fixed_control: [agents[0] == controllable[0], agents[1] == controllable[1]],
+            scenario,
+            config,
+            seed,
+            episode: 0,
+            fresh: true,
+            game,
+            controllers,
+            controlled: vec![0; n],
+            observations: vec![RawObservation::default(); n],
+            rewards: vec![0.0; n],
+            checkpoints: vec![CheckpointTracker::default(); n],
+            end: EndTracker::default(),
+            info: StepInfo::default(),
+            steps: 0,
+            done: false,
+            score_diff: 0,
+            waiting_for_game: 0,
+        };
+        env.begin(0);
+        Ok(env)
+    }
+
+    /// Starts the next episode (the same one again if no step was taken since the last start).
+    pub fn reset(&mut self) {
+        let episode = if self.fresh { self.episode } else { self.episode + 1 };
+        self.begin(episode);
+    }
+
+    /// Reseeds and starts episode 0 of the new seed (Gymnasium's `reset(seed=…)`).
+    pub fn reset_with_seed(&mut self, seed: u64) {
+        self.seed = seed;
+        self.begin(0);
+    }
+
+    fn begin(&mut self, episode: u64) {
+        self.episode = episode;
+        self.fresh = true;
+        self.game = Match::new(&self.scenario, episode, self.seed);
+        self.steps = 0;
+        self.done = false;
+        self.score_diff = 0;
+        self.waiting_for_game = 0;
+        for c in &mut self.controllers {
+            c.sticky = StickyState::default();
+        }
+        for t in &mut self.checkpoints {
+            *t = CheckpointTracker::default();
+        }
+        for side in Side::BOTH {
+            let (start, len) = self.controller_span(side);
+            control::initial(&self.game, side, &mut self.controlled[start..start + len]);
+        }
+        self.rewards.fill(0.0);
+        self.refresh_observations();
+        self.end.reset(self.game.owner().map(|o| o.0));
+        self.info = StepInfo {
+            score: [0, 0],
+            steps_left: self.steps_left(),
+            game_mode: self.game.mode(),
+            score_reward: 0.0,
+            checkpoint_reward: 0.0,
+            steps: 0,
+            episode,
+        };
+    }
+
+    /// First controller index and number of controllers of `side`.
+    fn controller_span(&self, side: Side) -> (usize, usize) {
+        let left = self.controllers.iter().filter(|c| c.side == Side::Left).count();
+        match side {
+            Side::Left => (0, left),
+            Side::Right => (left, self.controllers.len() - left),
+        }
+    }
+
+    fn steps_left(&self) -> u32 {
+        (self.scenario.game_duration + 1).saturating_sub(self.steps)
+    }
+
+    /// Decodes action indices of the configured action set and steps.
+    ///
+    /// # Errors
+    /// As [`Env::step`], plus [`EngineError::UnknownAction`] for an index outside the set.
+    pub fn step_indices(&mut self, actions: &[u32]) -> Result<StepOutcome, EngineError> {
+        if actions.len() != self.controllers.len() {
+            return Err(EngineError::ActionCount { expected: self.controllers.len(), got: actions.len() });
+        }
+        // At most 22 controllers: decode on the stack, no allocation.
+        let mut decoded = [Action::Idle; 22];
+        for (slot, &a) in decoded.iter_mut().zip(actions) {
+            *slot = self.config.action_set.decode(a)?;
+        }
+        self.step(&decoded[..actions.len()])
+    }
+
+    /// Plays one step: applies one action per controller (left controllers first; actions of
+    /// right-team controllers are in their own frame), simulates 10 ticks of play (plus any dead
+    /// time, after which control returns at the restart), then computes rewards, end conditions
+    /// and observations.
+    ///
+    /// # Errors
+    /// [`EngineError::ActionCount`] when `actions.len()` differs from [`Env::num_controllers`];
+    /// [`EngineError::EpisodeOver`] after the episode ended.
+    pub fn step(&mut self, actions: &[Action]) -> Result<StepOutcome, EngineError> {
+        if actions.len() != self.controllers.len() {
+            return Err(EngineError::ActionCount { expected: self.controllers.len(), got: actions.len() });
+        }
+        if self.done {
+            return Err(EngineError::EpisodeOver);
+        }
+        self.fresh = false;
+        for i in 0..self.controllers.len() {
+            let action = self.anti_stalling(i, actions[i]);
+            self.apply_action(i, action);
+        }
+        let mut ticks = 0;
+        for _ in 0..TICKS_PER_STEP {
+            self.game.tick();
+            ticks += 1;
+            if !self.game.in_play() {
+                while !self.game.in_play() && ticks < MAX_TICKS_PER_STEP {
+                    self.game.tick();
+                    ticks += 1;
+                }
+                break;
+            }
+        }
+        self.steps += 1;
+        self.waiting_for_game = if self.game.mode() == GameMode::Normal { 0 } else { self.waiting_for_game + 1 };
+        for side in Side::BOTH {
+            let (start, len) = self.controller_span(side);
+            control::update(&self.game, side, &mut self.controlled[start..start + len], self.fixed_control[side.index()]);
+        }
+        self.refresh_observations();
+
+        let score = self.game.score();
+        let diff = score[0] as i32 - score[1] as i32;
+        let scoring = scoring_reward(self.score_diff, diff);
+        self.score_diff = diff;
+        let mut checkpoint_total = 0.0;
+        for i in 0..self.controllers.len() {
+            let r = if self.controllers[i].side == Side::Left { scoring } else { -scoring };
+            let bonus = if self.config.checkpoints { self.checkpoints[i].reward(r, &self.observations[i]) } else { 0.0 };
+            checkpoint_total += bonus;
+            self.rewards[i] = r + bonus;
+        }
+        let terminated = self.end.terminated(&self.scenario, score, self.game.mode(), self.game.owner().map(|o| o.0));
+        let truncated = self.steps >= self.scenario.game_duration + 1;
+        self.done = terminated || truncated;
+        self.info = StepInfo {
+            score,
+            steps_left: self.steps_left(),
+            game_mode: self.game.mode(),
+            score_reward: scoring,
+            checkpoint_reward: checkpoint_total,
+            steps: self.steps,
+            episode: self.episode,
+        };
+        Ok(StepOutcome { terminated, truncated })
+    }
+
+    /// GRF's anti-stalling rule (grf.md §5.4): after 20 steps waiting at a set piece every agent
+    /// action becomes `short_pass`; after that, `idle`, except that the agent-controlled ball owner
+    /// is made to run towards the opponents' goal (and after 30 steps back).
+    fn anti_stalling(&self, i: usize, action: Action) -> Action {
+        use std::cmp::Ordering;
+        match self.waiting_for_game.cmp(&20) {
+            Ordering::Less => action,
+            Ordering::Equal => Action::ShortPass,
+            Ordering::Greater => {
+                let c = &self.controllers[i];
+                if self.game.owner() == Some((c.side, self.controlled[i])) {
+                    // In the controller's own frame "right" runs at the opponents' goal.
+                    if self.waiting_for_game < 30 { Action::Right } else { Action::Left }
+                } else {
+                    Action::Idle
+                }
+            }
+        }
+    }
+
+    fn apply_action(&mut self, i: usize, action: Action) {
+        let side = self.controllers[i].side;
+        let global = if side == Side::Right { action.rotated() } else { action };
+        let press = self.controllers[i].sticky.apply(global);
+        let sticky = self.controllers[i].sticky;
+        let index = self.controlled[i];
+        if sticky.builtin {
+            self.game.set_agent_input(side, index, None);
+            return;
+        }
+        let player = &self.game.team(side)[index];
+        let dir = sticky.direction_action().and_then(Action::direction_vector).unwrap_or(Vec2::ZERO);
+        let speed = if sticky.dribble {
+            DRIBBLE_SPEED
+        } else if sticky.sprint {
+            player.max_speed
+        } else {
+            WALK_SPEED
+        };
+        let aim = if dir == Vec2::ZERO { player.facing } else { dir };
+        // GRF's gauge: power = clamp((gauge - 60 ms) / 940 ms, 0, 1) (grf.md §5.4).
+        let power = ((ONE_STEP_GAUGE_MS - 60.0) / 940.0).clamp(0.0, 1.0);
+        let input = PlayerInput {
+            velocity: dir * speed,
+            look: player.facing,
+            dribble: sticky.dribble,
+            kick: match press {
+                Press::Kick(kind) => Some(Kick { kind, target: KickTarget::Direction(aim), height: 0.6, power }),
+                _ => None,
+            },
+            slide: press == Press::Slide,
+        };
+        self.game.set_agent_input(side, index, Some(input));
+    }
+
+    fn refresh_observations(&mut self) {
+        let steps_left = self.steps_left();
+        for i in 0..self.controllers.len() {
+            let c = self.controllers[i];
+            let designated = control::designated(&self.game, c.side);
+            let active = Some(self.controlled[i]);
+            let designated = if self.fixed_control[c.side.index()] || self.controller_span(c.side).1 > 1 { designated } else { active };
+            self.observations[i].fill(&self.game, c.side, active, designated, c.sticky.bits(c.side == Side::Right), steps_left);
+        }
+    }
+
+    /// Observations after the last reset or step, one per controller (left controllers first).
+    pub fn observations(&self) -> &[RawObservation] {
+        &self.observations
+    }
+
+    /// Rewards of the last step, one per controller (scoring + checkpoints).
+    pub fn rewards(&self) -> &[f32] {
+        &self.rewards
+    }
+
+    /// Information about the last step.
+    pub fn info(&self) -> &StepInfo {
+        &self.info
+    }
+
+    /// Number of agent controllers (the length of actions, observations and rewards).
+    pub fn num_controllers(&self) -> usize {
+        self.controllers.len()
+    }
+
+    /// Side of each controller, in order.
+    pub fn controller_sides(&self) -> impl Iterator<Item = Side> + '_ {
+        self.controllers.iter().map(|c| c.side)
+    }
+
+    /// Player (index in his team) each controller drives, in order.
+    pub fn controlled_players(&self) -> &[usize] {
+        &self.controlled
+    }
+
+    /// Whether the episode has ended (step now fails until reset).
+    pub fn is_done(&self) -> bool {
+        self.done
+    }
+
+    /// The scenario.
+    pub fn scenario(&self) -> &Scenario {
+        &self.scenario
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &EnvConfig {
+        &self.config
+    }
+
+    /// The action set agents use.
+    pub fn action_set(&self) -> ActionSet {
+        self.config.action_set
+    }
+
+    /// The match (read-only).
+    pub fn game(&self) -> &Match {
+        &self.game
+    }
+
+    /// The match, for tests and tools that set up situations by hand.
+    pub fn game_mut(&mut self) -> &mut Match {
+        &mut self.game
+    }
+}

@@ -1,0 +1,42 @@
+//! Errors the engine reports to its callers.
+
+use thiserror::Error;
+
+/// Everything that can go wrong when building or stepping an environment.
+#[derive(Debug, Error, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum EngineError {
+    /// The scenario breaks a rule the engine relies on.
+    #[error("invalid scenario: {reason}")]
+    InvalidScenario {
+        /// What is wrong, naming the field or player.
+        reason: String,
+    },
+    /// The environment configuration does not fit the scenario.
+    #[error("invalid environment configuration: {reason}")]
+    InvalidConfig {
+        /// What is wrong.
+        reason: String,
+    },
+    /// `step` got a different number of actions than there are controllers.
+    #[error("expected {expected} actions (one per controlled player), got {got}")]
+    ActionCount {
+        /// Number of controllers.
+        expected: usize,
+        /// Number of actions passed.
+        got: usize,
+    },
+    /// An action index outside the action set.
+    #[error("action index {index} is outside the {set} action set (0..{len})")]
+    UnknownAction {
+        /// The index passed.
+        index: u32,
+        /// The action set's name.
+        set: &'static str,
+        /// The set's size.
+        len: usize,
+    },
+    /// `step` after the episode ended; call `reset` first.
+    #[error("the episode has ended; call reset() before step()")]
+    EpisodeOver,
+}

@@ -1,0 +1,237 @@
+//! The match: the world (ball, two teams, referee state, built-in AI) and [`Match::tick`], which
+//! advances it 10 ms. `match` is a keyword, so the module is `game`.
+
+mod action;
+mod input;
+pub(crate) mod kick;
+mod mode;
+mod possession;
+mod tick;
+
+use std::ops::Range;
+use std::sync::Arc;
+
+
+pub use action::{Action, ActionSet, DIRECTIONS};
+pub use input::{Kick, KickKind, KickTarget, PlayerInput};
+pub use mode::GameMode;
+
+use crate::ai::TeamAi;
+use crate::geometry::coords::{ball_start_to_world, formation_to_world};
+use crate::geometry::{Side, TeamFrame};
+use crate::physics::{Ball, PitchColliders};
+use crate::player::Player;
+use crate::rng::MatchRng;
+use crate::rules::{Restart, Stoppage};
+use crate::scenario::{PlayerEntry, Scenario};
+
+/// Whether the ball is in play or the match is waiting for a restart.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Phase {
+    /// Ball in play (possibly a set piece waiting for its taker: see [`Match::mode`]).
+    Play,
+    /// Dead ball after a goal or the ball leaving the pitch; players walk to their places and the
+    /// restart is set up when `ticks_left` reaches 0. These ticks are not env steps (grf.md §7.1).
+    Dead {
+        /// Ticks until the restart is ready.
+        ticks_left: u16,
+        /// The restart that follows.
+        restart: Restart,
+    },
+}
+
+/// Ticks of dead time after a goal before the kickoff (GRF without rendering: about 0.6 s).
+pub(crate) const GOAL_DEAD_TICKS: u16 = 60;
+/// Ticks of dead time after the ball leaves the pitch before the set piece is ready.
+pub(crate) const OUT_DEAD_TICKS: u16 = 100;
+
+/// The world: ball, both teams, score, game mode and referee state, and the built-in AI.
+#[derive(Clone, Debug)]
+pub struct Match {
+    pub(crate) players: Vec<Player>,
+    pub(crate) ranges: [Range<usize>; 2],
+    pub(crate) formations: [Vec<PlayerEntry>; 2],
+    pub(crate) difficulty: [f32; 2],
+    pub(crate) ball: Ball,
+    pub(crate) colliders: Arc<PitchColliders>,
+    /// Player (global index) with the ball at his feet.
+    pub(crate) owner: Option<usize>,
+    /// Player who touched the ball last.
+    pub(crate) last_touch: Option<usize>,
+    pub(crate) score: [u32; 2],
+    pub(crate) mode: GameMode,
+    pub(crate) phase: Phase,
+    /// Taker of the pending set piece (global index) while `mode` is not Normal.
+    pub(crate) taker: Option<usize>,
+    /// Ticks the set piece has been waiting for its taker.
+    pub(crate) set_piece_ticks: u32,
+    pub(crate) inputs: Vec<PlayerInput>,
+    pub(crate) agent_driven: Vec<bool>,
+    pub(crate) ai: [TeamAi; 2],
+    pub(crate) rng: MatchRng,
+    pub(crate) in_play_ticks: u64,
+    pub(crate) dead_ticks: u64,
+    /// The last stoppage seen (goal or ball out), kept for the env and the tests.
+    pub(crate) last_stoppage: Option<Stoppage>,
+}
+
+impl Match {
+    /// Sets up a match from a (validated) scenario for 0-based episode `episode`: players at their
+    /// formation places, ball at its start, play on (GRF's initial kickoff counts as taken on the
+    /// first tick, grf.md §3.4). `seed` picks the random stream; deterministic scenarios use 42.
+    pub fn new(scenario: &Scenario, episode: u64, seed: u64) -> Match {
+        let (left, right) = scenario.teams_for_episode(episode);
+        let difficulty = [scenario.left_team_difficulty, scenario.right_team_difficulty];
+        let mut players = Vec::with_capacity(left.len() + right.len());
+        for (side, entries) in [(Side::Left, left), (Side::Right, right)] {
+            for (i, e) in entries.iter().enumerate() {
+                let position = formation_to_world(side, e.x, e.y);
+                let home = TeamFrame::of(side).vec2(position);
+                let mut p = Player::new(side, i, e.role, position, home);
+                p.lazy = e.lazy;
+                p.controllable = e.controllable;
+                // Difficulty scales every stat (grf.md §7.6): top speed 8·(0.9 + 0.1·stat).
+                let stat = 0.3 + 0.7 * difficulty[side.index()];
+                p.max_speed = crate::player::top_speed(stat);
+                players.push(p);
+            }
+        }
+        let ranges = [0..left.len(), left.len()..left.len() + right.len()];
+        let (seed, noisy) = if scenario.deterministic { (42, false) } else { (seed, true) };
+        let n = players.len();
+        let ball_start = ball_start_to_world(scenario.ball_position[0], scenario.ball_position[1]);
+        Match {
+            ai: [TeamAi::new(Side::Left, difficulty[0], left.len()), TeamAi::new(Side::Right, difficulty[1], right.len())],
+            players,
+            ranges,
+            formations: [left.to_vec(), right.to_vec()],
+            difficulty,
+            ball: Ball::at_rest(ball_start),
+            colliders: Arc::new(PitchColliders::new()),
+            owner: None,
+            last_touch: None,
+            score: [0, 0],
+            mode: GameMode::Normal,
+            phase: Phase::Play,
+            taker: None,
+            set_piece_ticks: 0,
+            inputs: vec![PlayerInput::default(); n],
+            agent_driven: vec![false; n],
+            rng: MatchRng::new(seed, if scenario.deterministic { 0 } else { episode }, noisy),
+            in_play_ticks: 0,
+            dead_ticks: 0,
+            last_stoppage: None,
+        }
+    }
+
+    /// All players, left team first, each team in observation order.
+    #[inline]
+    pub fn players(&self) -> &[Player] {
+        &self.players
+    }
+
+    /// One team's players in observation order.
+    #[inline]
+    pub fn team(&self, side: Side) -> &[Player] {
+        &self.players[self.ranges[side.index()].clone()]
+    }
+
+    /// Global index of `side`'s player `index`.
+    #[inline]
+    pub fn global_index(&self, side: Side, index: usize) -> usize {
+        self.ranges[side.index()].start + index
+    }
+
+    /// The ball.
+    #[inline]
+    pub fn ball(&self) -> &Ball {
+        &self.ball
+    }
+
+    /// Goals `[left, right]`.
+    #[inline]
+    pub fn score(&self) -> [u32; 2] {
+        self.score
+    }
+
+    /// The pending set piece, or `Normal` in open play.
+    #[inline]
+    pub fn mode(&self) -> GameMode {
+        self.mode
+    }
+
+    /// Whether the ball is in play (not in dead time before a restart).
+    #[inline]
+    pub fn in_play(&self) -> bool {
+        matches!(self.phase, Phase::Play)
+    }
+
+    /// Current phase.
+    #[inline]
+    pub fn phase(&self) -> Phase {
+        self.phase
+    }
+
+    /// The player with the ball at his feet, as (side, index in team).
+    pub fn owner(&self) -> Option<(Side, usize)> {
+        self.owner.map(|g| (self.players[g].side, self.players[g].index))
+    }
+
+    /// The player who touched the ball last, as (side, index in team).
+    pub fn last_touch(&self) -> Option<(Side, usize)> {
+        self.last_touch.map(|g| (self.players[g].side, self.players[g].index))
+    }
+
+    /// The last goal or out-of-play the referee saw this episode.
+    pub fn last_stoppage(&self) -> Option<Stoppage> {
+        self.last_stoppage
+    }
+
+    /// Ticks played with the ball in play.
+    pub fn in_play_ticks(&self) -> u64 {
+        self.in_play_ticks
+    }
+
+    /// Team difficulties `[left, right]`.
+    pub fn difficulty(&self) -> [f32; 2] {
+        self.difficulty
+    }
+
+    /// Gives `side`'s player `index` to an agent (`Some(input)`) or back to the built-in AI (`None`).
+    pub fn set_agent_input(&mut self, side: Side, index: usize, input: Option<PlayerInput>) {
+        let g = self.global_index(side, index);
+        match input {
+            Some(i) => {
+                self.inputs[g] = i;
+                self.agent_driven[g] = true;
+            }
+            None => self.agent_driven[g] = false,
+        }
+    }
+
+    /// A 64-bit fingerprint of the dynamic state (positions, velocities, ball, score, mode), for
+    /// determinism tests. Equal states give equal hashes on every platform.
+    pub fn state_hash(&self) -> u64 {
+        // FNV-1a over the exact bit patterns.
+        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+        let mut feed = |x: u32| {
+            for b in x.to_le_bytes() {
+                h ^= u64::from(b);
+                h = h.wrapping_mul(0x0100_0000_01b3);
+            }
+        };
+        for p in &self.players {
+            for v in [p.position.x, p.position.y, p.velocity.x, p.velocity.y, p.facing.x, p.facing.y] {
+                feed(v.to_bits());
+            }
+        }
+        for v in self.ball.position.to_array().into_iter().chain(self.ball.velocity.to_array()) {
+            feed(v.to_bits());
+        }
+        feed(self.score[0]);
+        feed(self.score[1]);
+        feed(self.mode as u32);
+        feed(self.owner.map_or(u32::MAX, |g| g as u32));
+        h
+    }
+}

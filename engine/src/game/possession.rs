@@ -1,0 +1,138 @@
+//! Ball control: trapping and catching a loose ball, deflections when it comes too fast, and
+//! standing and sliding tackles on the player who has it.
+
+use glam::Vec3;
+
+use super::{GameMode, Match};
+use crate::geometry::pitch::{in_penalty_area, BALL_RADIUS};
+
+/// Horizontal reach (m) of an outfield player for a loose ball.
+const FOOT_REACH: f32 = 0.7;
+/// Highest ball (m) an outfield player controls (chest height; headers come with the laws issue).
+const FOOT_HEIGHT: f32 = 0.9;
+/// Goalkeeper's reach (m) inside his area, standing and diving; highest catch (m).
+const HAND_REACH: f32 = 1.1;
+const DIVE_REACH: f32 = 2.0;
+const HAND_HEIGHT: f32 = 2.7;
+/// Fastest ball (m/s, relative) an outfield player at difficulty 1 traps; a keeper catches.
+const TRAP_SPEED: f32 = 13.0;
+const CATCH_SPEED: f32 = 24.0;
+/// Standing tackle: range (m) and success chance per tick at equal skill.
+const TACKLE_RANGE: f32 = 0.9;
+const TACKLE_CHANCE: f32 = 0.025;
+/// Sliding tackle reach (m).
+const SLIDE_REACH: f32 = 1.3;
+/// Ticks a dispossessed player cannot touch the ball.
+const TACKLED_COOLDOWN: u16 = 40;
+
+impl Match {
+    /// Settles who has the ball after everything moved this tick.
+    pub(crate) fn settle_possession(&mut self) {
+        if self.mode != GameMode::Normal {
+            // During a set piece only the taker, who holds the ball, may touch it.
+            return;
+        }
+        match self.owner {
+            Some(owner) => self.challenge(owner),
+            None => self.control_loose_ball(),
+        }
+    }
+
+    fn skill(&self, g: usize) -> f32 {
+        0.3 + 0.7 * self.difficulty[self.players[g].side.index()]
+    }
+
+    /// Opponents near the owner try to take the ball.
+    fn challenge(&mut self, owner: usize) {
+        let side = self.players[owner].side;
+        let ball = self.ball.xy();
+        let range = self.ranges[side.opponent().index()].clone();
+        for q in range {
+            let p = &self.players[q];
+            if !p.active || p.touch_cooldown > 0 {
+                continue;
+            }
+            let d2 = p.position.distance_squared(ball);
+            let won = if p.is_sliding() {
+                d2 < SLIDE_REACH * SLIDE_REACH
+            } else if d2 < TACKLE_RANGE * TACKLE_RANGE {
+                let dribbling = self.inputs[owner].dribble;
+                let odds = TACKLE_CHANCE * self.skill(q) / self.skill(owner) * if dribbling { 0.6 } else { 1.0 };
+                self.rng.chance(odds)
+            } else {
+                false
+            };
+            if won {
+                let tackler = &self.players[q];
+                let away = (ball - tackler.position).normalize_or(tackler.facing);
+                let push = if tackler.is_sliding() { 6.0 } else { 1.5 };
+                self.ball.velocity = (tackler.velocity * 0.6 + away * push).extend(0.0);
+                self.owner = None;
+                self.last_touch = Some(q);
+                self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
+                return;
+            }
+        }
+    }
+
+    /// The nearest player within reach of a loose ball traps, catches or deflects it.
+    fn control_loose_ball(&mut self) {
+        let ball = self.ball;
+        if ball.position.z > HAND_HEIGHT {
+            return;
+        }
+        let mut best = None;
+        let mut best_d2 = f32::INFINITY;
+        for (g, p) in self.players.iter().enumerate() {
+            if !p.active || p.touch_cooldown > 0 {
+                continue;
+            }
+            let keeper_hands = p.is_keeper() && in_penalty_area(p.position.x, p.position.y, -p.side.attack_sign());
+            let (reach, height) = if keeper_hands {
+                (if p.dive_ticks > 0 { DIVE_REACH } else { HAND_REACH }, HAND_HEIGHT)
+            } else if p.is_sliding() {
+                (SLIDE_REACH, FOOT_HEIGHT)
+            } else {
+                (FOOT_REACH, FOOT_HEIGHT)
+            };
+            if ball.position.z > height {
+                continue;
+            }
+            let d2 = p.position.distance_squared(ball.xy());
+            if d2 < reach * reach && d2 < best_d2 {
+                best_d2 = d2;
+                best = Some((g, keeper_hands));
+            }
+        }
+        let Some((g, keeper_hands)) = best else { return };
+        self.last_touch = Some(g);
+        let p = &self.players[g];
+        let relative = (ball.velocity - p.velocity.extend(0.0)).length();
+        let limit = if keeper_hands { CATCH_SPEED } else { TRAP_SPEED } * (0.6 + 0.4 * self.skill(g));
+        if p.is_sliding() && !keeper_hands {
+            // A slide knocks the ball on in the slide's direction.
+            self.ball.velocity = (p.velocity * 1.2).extend(0.0);
+            return;
+        }
+        if relative <= limit {
+            self.owner = Some(g);
+            self.ball.velocity = p.velocity.extend(0.0);
+            self.ball.position.z = BALL_RADIUS;
+            return;
+        }
+        // Too fast to control: the ball rebounds off the body (or is parried away from goal).
+        let mut normal = (ball.xy() - p.position).normalize_or(-ball.velocity.truncate().normalize_or_zero());
+        if keeper_hands {
+            normal = (normal + glam::Vec2::new(p.side.attack_sign(), 0.0)).normalize_or(normal);
+        }
+        let n3 = normal.extend(0.0);
+        let v = ball.velocity;
+        let vn = v.dot(n3);
+        let mut out = if vn < 0.0 { v - n3 * (1.4 * vn) } else { v };
+        out = Vec3::new(out.x * 0.55, out.y * 0.55, out.z * 0.5);
+        out.x += self.rng.noise(1.5);
+        out.y += self.rng.noise(1.5);
+        self.ball.velocity = out;
+        self.players[g].touch_cooldown = 15;
+    }
+}

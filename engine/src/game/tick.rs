@@ -1,0 +1,239 @@
+//! [`Match::tick`]: one 10 ms step of the world.
+
+use glam::Vec2;
+
+use super::kick::{auto_target, launch};
+use super::{GameMode, KickKind, Match, Phase, GOAL_DEAD_TICKS, OUT_DEAD_TICKS};
+use crate::game::input::Kick;
+use crate::physics::{move_player, separate_players, MotionLimits, TICK_SECONDS};
+use crate::player::DRIBBLE_SPEED;
+use crate::rules::{self, Restart, Stoppage};
+
+/// Ticks a player cannot touch the ball after kicking it.
+const KICK_COOLDOWN: u16 = 25;
+/// Ticks a kick requested without the ball stays buffered (GRF: up to 2 s).
+const KICK_BUFFER_TICKS: u16 = 200;
+/// Sliding tackle: duration (ticks) and initial speed (m/s).
+const SLIDE_TICKS: u16 = 50;
+const SLIDE_SPEED: f32 = 7.5;
+/// Goalkeeper's dive: duration (ticks) and lateral speed (m/s).
+const DIVE_TICKS: u16 = 35;
+const DIVE_SPEED: f32 = 6.5;
+/// Top speed with the ball at one's feet (m/s): the ball slows a sprinter down a little.
+const BALL_CARRIER_SPRINT: f32 = 7.2;
+
+impl Match {
+    /// Advances the match by one tick (10 ms). In play: the built-in AI decides for every player no
+    /// agent drives, kicks and tackles happen, players and ball move, possession is settled and the
+    /// referee judges goals and balls out of play. In dead time: players walk to their places and
+    /// the restart is set up when the time is up.
+    pub fn tick(&mut self) {
+        match self.phase {
+            Phase::Play => self.tick_in_play(),
+            Phase::Dead { ticks_left, restart } => self.tick_dead(ticks_left, restart),
+        }
+    }
+
+    fn tick_in_play(&mut self) {
+        self.in_play_ticks += 1;
+        self.run_ai();
+        self.apply_kicks_and_tackles();
+        self.move_players();
+        separate_players(&mut self.players);
+        let before = self.ball.position;
+        self.move_ball();
+        self.settle_possession();
+        if let Some(stoppage) = rules::judge(before, self.ball.position, self.last_touch.map(|g| self.players[g].side)) {
+            self.stop_play(stoppage);
+        }
+        for p in &mut self.players {
+            p.touch_cooldown = p.touch_cooldown.saturating_sub(1);
+            p.dive_ticks = p.dive_ticks.saturating_sub(1);
+            if let Some((_, ttl)) = &mut p.pending_kick {
+                *ttl = ttl.saturating_sub(1);
+                if *ttl == 0 {
+                    p.pending_kick = None;
+                }
+            }
+        }
+        if self.mode != GameMode::Normal {
+            self.set_piece_ticks += 1;
+        }
+    }
+
+    fn run_ai(&mut self) {
+        let view = crate::ai::MatchView {
+            players: &self.players,
+            ranges: &self.ranges,
+            ball: &self.ball,
+            owner: self.owner,
+            last_touch: self.last_touch,
+            mode: self.mode,
+            taker: self.taker,
+            set_piece_ticks: self.set_piece_ticks,
+            tick: self.in_play_ticks,
+        };
+        for side in 0..2 {
+            let range = self.ranges[side].clone();
+            self.ai[side].drive(&view, &mut self.rng, &mut self.inputs[range.clone()], &self.agent_driven[range]);
+        }
+    }
+
+    fn apply_kicks_and_tackles(&mut self) {
+        for g in 0..self.players.len() {
+            if !self.players[g].active {
+                continue;
+            }
+            let input = self.inputs[g];
+            if let Some(kick) = input.kick {
+                if self.owner == Some(g) {
+                    self.execute_kick(g, kick);
+                } else if self.agent_driven[g] {
+                    self.players[g].pending_kick = Some((kick, KICK_BUFFER_TICKS));
+                }
+                // A kick is a one-tick request.
+                self.inputs[g].kick = None;
+            } else if self.owner == Some(g) {
+                if let Some((kick, _)) = self.players[g].pending_kick.take() {
+                    self.execute_kick(g, kick);
+                }
+            }
+            let p = &mut self.players[g];
+            if input.slide && self.owner != Some(g) && p.slide_ticks == 0 && p.dive_ticks == 0 && self.mode == GameMode::Normal {
+                let dir = if input.velocity.length_squared() > 0.01 { input.velocity.normalize() } else { p.facing };
+                let own_goal = -p.side.attack_sign();
+                if p.is_keeper() && crate::geometry::pitch::in_penalty_area(p.position.x, p.position.y, own_goal) {
+                    p.dive_ticks = DIVE_TICKS;
+                    p.velocity = dir * DIVE_SPEED;
+                } else {
+                    p.slide_ticks = SLIDE_TICKS;
+                    p.facing = dir;
+                    p.velocity = dir * SLIDE_SPEED;
+                }
+            }
+            if input.slide {
+                self.inputs[g].slide = false;
+            }
+        }
+    }
+
+    /// Executes `kick` by the ball owner `g`.
+    pub(crate) fn execute_kick(&mut self, g: usize, kick: Kick) {
+        let side = self.players[g].side;
+        let target = match kick.target {
+            super::KickTarget::Point(p) => p,
+            super::KickTarget::Direction(dir) => {
+                if kick.kind == KickKind::Shot {
+                    let keeper_y = self.team(side.opponent()).iter().find(|p| p.is_keeper() && p.active).map(|k| k.position.y);
+                    super::kick::shot_target(side.attack_sign(), keeper_y, self.players[g].position.y)
+                } else {
+                    let (mates, opponents) = (self.team(side), self.team(side.opponent()));
+                    auto_target(kick.kind, &self.players[g], mates, opponents, dir)
+                }
+            }
+        };
+        let accuracy = 0.3 + 0.7 * self.difficulty[side.index()];
+        launch(&mut self.ball, &self.players[g], &kick, target, accuracy, &mut self.rng);
+        let p = &mut self.players[g];
+        p.touch_cooldown = KICK_COOLDOWN;
+        p.pending_kick = None;
+        self.owner = None;
+        self.last_touch = Some(g);
+        if self.taker == Some(g) {
+            self.end_set_piece();
+        }
+    }
+
+    fn move_players(&mut self) {
+        let limits = MotionLimits::default();
+        for g in 0..self.players.len() {
+            let p = &mut self.players[g];
+            if !p.active {
+                continue;
+            }
+            if p.slide_ticks > 0 || p.dive_ticks > 0 {
+                p.slide_ticks = p.slide_ticks.saturating_sub(1);
+                p.velocity *= 0.96;
+                p.position += p.velocity * TICK_SECONDS;
+                continue;
+            }
+            let mut input = self.inputs[g];
+            if self.taker == Some(g) {
+                // A set-piece taker stands at the ball until he plays it.
+                input.velocity = Vec2::ZERO;
+            } else {
+                let cap = if self.owner == Some(g) {
+                    if input.dribble { DRIBBLE_SPEED } else { BALL_CARRIER_SPRINT.min(p.max_speed) }
+                } else if input.dribble {
+                    DRIBBLE_SPEED
+                } else {
+                    p.max_speed
+                };
+                let speed2 = input.velocity.length_squared();
+                if speed2 > cap * cap {
+                    input.velocity *= cap / speed2.sqrt();
+                }
+            }
+            move_player(p, &input, limits, TICK_SECONDS);
+        }
+    }
+
+    fn move_ball(&mut self) {
+        if let Some(g) = self.owner {
+            // At the owner's feet, half a metre ahead of him.
+            let p = &self.players[g];
+            let at = p.position + p.facing * 0.5;
+            self.ball.position = at.extend(crate::geometry::pitch::BALL_RADIUS);
+            self.ball.velocity = p.velocity.extend(0.0);
+            return;
+        }
+        self.ball.integrate(TICK_SECONDS, &self.colliders);
+    }
+
+    /// Stops play for a goal or a ball out of play and starts the dead time.
+    fn stop_play(&mut self, stoppage: Stoppage) {
+        self.last_stoppage = Some(stoppage);
+        self.owner = None;
+        self.taker = None;
+        let (ticks, restart) = match stoppage {
+            Stoppage::Goal { scorer } => {
+                self.score[scorer.index()] += 1;
+                self.mode = GameMode::KickOff;
+                (GOAL_DEAD_TICKS, rules::kickoff::after_goal(scorer))
+            }
+            Stoppage::Out { restart } => {
+                self.mode = restart.mode;
+                (OUT_DEAD_TICKS, restart)
+            }
+        };
+        for p in &mut self.players {
+            p.slide_ticks = 0;
+            p.pending_kick = None;
+        }
+        self.phase = Phase::Dead { ticks_left: ticks, restart };
+    }
+
+    fn tick_dead(&mut self, ticks_left: u16, restart: Restart) {
+        self.dead_ticks += 1;
+        // The ball finishes its flight (into the net, over the boards); players slow to a walk.
+        self.ball.integrate(TICK_SECONDS, &self.colliders);
+        for p in &mut self.players {
+            p.velocity *= 0.97;
+            p.position += p.velocity * TICK_SECONDS;
+        }
+        if ticks_left > 1 {
+            self.phase = Phase::Dead { ticks_left: ticks_left - 1, restart };
+            return;
+        }
+        self.phase = Phase::Play;
+        self.set_piece_ticks = 0;
+        rules::set_up_restart(self, restart);
+    }
+
+    /// The taker has played the ball: back to open play.
+    pub(crate) fn end_set_piece(&mut self) {
+        self.taker = None;
+        self.mode = GameMode::Normal;
+        self.set_piece_ticks = 0;
+    }
+}

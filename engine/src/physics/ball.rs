@@ -1,0 +1,153 @@
+//! The ball: flight under gravity and quadratic air drag, bounces with restitution, rolling with
+//! friction, and contacts with the goal frames and nets through [`PitchColliders`].
+
+use glam::{Vec2, Vec3};
+
+use super::colliders::{PitchColliders, Surface};
+use crate::geometry::pitch::{BALL_RADIUS, GRAVITY, RIM_HALF_LENGTH, RIM_HALF_WIDTH};
+
+/// Quadratic air drag coefficient k in a = -k·|v|·v (1/m). A football (0.43 kg, 0.038 m²,
+/// Cd ≈ 0.25 at match speeds) gives ½ρCdA/m ≈ 0.013; GRF uses 0.015 (grf.md §7.4).
+pub const BALL_DRAG: f32 = 0.014;
+/// Restitution of a bounce on grass (GRF 0.62, grf.md §7.4).
+pub const BOUNCE_RESTITUTION: f32 = 0.62;
+/// Constant part of the rolling deceleration (m/s²).
+pub const ROLL_DECELERATION: f32 = 1.0;
+/// Speed-proportional part of the rolling deceleration (1/s): grass resists a fast ball more.
+pub const ROLL_VISCOUS: f32 = 0.15;
+/// Below this vertical speed (m/s) a bouncing ball settles into rolling.
+const SETTLE_SPEED: f32 = 0.8;
+
+/// Ball state in the engine frame (m, m/s).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ball {
+    /// Centre position (m); z = [`BALL_RADIUS`] when resting on the grass.
+    pub position: Vec3,
+    /// Velocity (m/s).
+    pub velocity: Vec3,
+    /// Angular velocity (rad/s), from rolling and kicks; cosmetic (no Magnus force yet).
+    pub spin: Vec3,
+}
+
+impl Ball {
+    /// A ball at rest on the grass at `(x, y)` (m).
+    pub fn at_rest(at: Vec2) -> Ball {
+        Ball { position: at.extend(BALL_RADIUS), velocity: Vec3::ZERO, spin: Vec3::ZERO }
+    }
+
+    /// Whether the ball is on the grass (rolling or at rest).
+    #[inline]
+    pub fn on_ground(&self) -> bool {
+        self.position.z <= BALL_RADIUS + 0.005 && self.velocity.z.abs() < SETTLE_SPEED
+    }
+
+    /// Position on the ground plane (m).
+    #[inline]
+    pub fn xy(&self) -> Vec2 {
+        self.position.truncate()
+    }
+
+    /// Advances the ball `dt` seconds. Returns the surface it last touched, if any.
+    pub fn integrate(&mut self, dt: f32, colliders: &PitchColliders) -> Option<Surface> {
+        if self.on_ground() {
+            self.position.z = BALL_RADIUS;
+            self.velocity.z = 0.0;
+            let v = self.velocity.truncate();
+            let speed = v.length();
+            let loss = (ROLL_DECELERATION + ROLL_VISCOUS * speed) * dt;
+            let v = if loss >= speed { Vec2::ZERO } else { v * ((speed - loss) / speed) };
+            self.velocity = v.extend(0.0);
+            // Rolling without slipping: ω = ẑ × v / r.
+            self.spin = Vec3::new(-v.y, v.x, 0.0) / BALL_RADIUS;
+        } else {
+            let speed = self.velocity.length();
+            self.velocity += (Vec3::new(0.0, 0.0, -GRAVITY) - BALL_DRAG * speed * self.velocity) * dt;
+        }
+
+        let mut touched = None;
+        let mut remaining = dt;
+        for _ in 0..3 {
+            match colliders.sweep(self.position, self.velocity, remaining) {
+                Some(hit) if self.velocity.dot(hit.normal) < 0.0 => {
+                    self.position += self.velocity * hit.time + hit.normal * 1e-4;
+                    self.respond(hit.normal, hit.surface);
+                    remaining -= hit.time;
+                    touched = Some(hit.surface);
+                }
+                _ => {
+                    self.position += self.velocity * remaining;
+                    remaining = 0.0;
+                    break;
+                }
+            }
+        }
+        if remaining > 0.0 {
+            self.position += self.velocity * remaining;
+        }
+        if self.position.z < BALL_RADIUS {
+            self.position.z = BALL_RADIUS;
+            self.velocity.z = self.velocity.z.max(0.0);
+        }
+        // Advertising boards: the ball never leaves the rim.
+        if self.position.x.abs() > RIM_HALF_LENGTH || self.position.y.abs() > RIM_HALF_WIDTH {
+            self.position.x = self.position.x.clamp(-RIM_HALF_LENGTH, RIM_HALF_LENGTH);
+            self.position.y = self.position.y.clamp(-RIM_HALF_WIDTH, RIM_HALF_WIDTH);
+            self.velocity = Vec3::ZERO;
+        }
+        touched
+    }
+
+    fn respond(&mut self, normal: Vec3, surface: Surface) {
+        let (restitution, keep) = surface.response();
+        let vn = self.velocity.dot(normal);
+        let normal_part = normal * vn;
+        let tangent = self.velocity - normal_part;
+        self.velocity = tangent * keep - normal_part * restitution;
+        if surface == Surface::Ground && self.velocity.z < SETTLE_SPEED {
+            self.velocity.z = 0.0;
+            self.position.z = BALL_RADIUS;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::TICK_SECONDS;
+
+    fn run(ball: &mut Ball, ticks: usize, colliders: &PitchColliders) -> Vec<Surface> {
+        (0..ticks).filter_map(|_| ball.integrate(TICK_SECONDS, colliders)).collect()
+    }
+
+    #[test]
+    fn a_rolling_ball_slows_and_stops() {
+        let c = PitchColliders::new();
+        let mut b = Ball::at_rest(Vec2::ZERO);
+        b.velocity = Vec3::new(10.0, 0.0, 0.0);
+        run(&mut b, 1500, &c);
+        assert_eq!(b.velocity, Vec3::ZERO);
+        assert!((20.0..35.0).contains(&b.position.x), "rolled {}", b.position.x);
+    }
+
+    #[test]
+    fn a_dropped_ball_bounces_lower_each_time_then_rolls() {
+        let c = PitchColliders::new();
+        let mut b = Ball::at_rest(Vec2::ZERO);
+        b.position.z = 3.0;
+        let mut peaks = Vec::new();
+        let mut rising = false;
+        let mut last_z = b.position.z;
+        for _ in 0..600 {
+            b.integrate(TICK_SECONDS, &c);
+            if rising && b.position.z < last_z {
+                peaks.push(last_z);
+            }
+            rising = b.position.z > last_z;
+            last_z = b.position.z;
+            assert!(b.position.z >= BALL_RADIUS - 1e-6);
+        }
+        assert!(peaks.len() >= 2, "peaks {peaks:?}");
+        assert!(peaks.windows(2).all(|w| w[1] < w[0]));
+        assert!(b.on_ground());
+    }
+}

@@ -1,0 +1,13 @@
+//! Physics: the ball's flight, bounce and roll against rapier3d colliders for the ground, posts,
+//! crossbars and nets, and the players' kinematics and body collisions.
+
+mod ball;
+mod colliders;
+mod player_motion;
+
+pub use ball::{Ball, BALL_DRAG, BOUNCE_RESTITUTION, ROLL_DECELERATION, ROLL_VISCOUS};
+pub use colliders::{PitchColliders, Surface};
+pub(crate) use player_motion::{move_player, separate_players, MotionLimits};
+
+/// Length of one tick (s): 10 ms, GRF's physics step (grf.md §7.1).
+pub const TICK_SECONDS: f32 = 0.01;

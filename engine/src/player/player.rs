@@ -1,0 +1,105 @@
+//! One player's state.
+
+use glam::Vec2;
+
+use super::Role;
+use crate::game::Kick;
+use crate::geometry::Side;
+
+/// A player on the pitch (engine frame, SI units).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Player {
+    /// Team.
+    pub side: Side,
+    /// Index within the team (the observation order).
+    pub index: usize,
+    /// Role from the scenario.
+    pub role: Role,
+    /// Position on the ground (m).
+    pub position: Vec2,
+    /// Velocity (m/s).
+    pub velocity: Vec2,
+    /// Unit vector the player faces.
+    pub facing: Vec2,
+    /// A lazy player only stands and reacts physically.
+    pub lazy: bool,
+    /// Whether an agent may control this player.
+    pub controllable: bool,
+    /// False once sent off (the laws issue adds sending-offs).
+    pub active: bool,
+    /// Cards shown to the player (observed as `yellow_card` when ≥ 1).
+    pub cards: u8,
+    /// Fatigue in [0, 0.99] (observed as `tired_factor`; 0 = fresh).
+    pub fatigue: f32,
+    /// Top sprint speed (m/s), from the team's difficulty (grf.md §5.4, §7.6).
+    pub max_speed: f32,
+    /// Home position in the team's own frame (m), from the formation.
+    pub home: Vec2,
+    /// Ticks during which the player cannot touch the ball (just kicked it, or was tackled).
+    pub(crate) touch_cooldown: u16,
+    /// Ticks left of a sliding tackle; the player cannot steer while sliding.
+    pub(crate) slide_ticks: u16,
+    /// Ticks left of a goalkeeper's dive.
+    pub(crate) dive_ticks: u16,
+    /// A kick requested before the player had the ball, and the ticks it stays valid (GRF buffers
+    /// actions up to 2 s).
+    pub(crate) pending_kick: Option<(Kick, u16)>,
+}
+
+/// Walking speed (m/s) with a direction and no modifier (grf.md §5.4).
+pub const WALK_SPEED: f32 = 5.0;
+/// Sprint speed (m/s) of the fastest player (grf.md §5.4).
+pub const SPRINT_SPEED: f32 = 8.0;
+/// Speed with the dribble button held (m/s, grf.md §5.4).
+pub const DRIBBLE_SPEED: f32 = 3.5;
+
+impl Player {
+    /// A fresh player standing at `position` (m), facing the opponents' goal.
+    pub fn new(side: Side, index: usize, role: Role, position: Vec2, home: Vec2) -> Player {
+        Player {
+            side,
+            index,
+            role,
+            position,
+            velocity: Vec2::ZERO,
+            facing: Vec2::new(side.attack_sign(), 0.0),
+            lazy: false,
+            controllable: true,
+            active: true,
+            cards: 0,
+            fatigue: 0.0,
+            max_speed: SPRINT_SPEED,
+            home,
+            touch_cooldown: 0,
+            slide_ticks: 0,
+            dive_ticks: 0,
+            pending_kick: None,
+        }
+    }
+
+    /// Whether the player is the goalkeeper.
+    #[inline]
+    pub fn is_keeper(&self) -> bool {
+        self.role == Role::GK
+    }
+
+    /// Whether the player is in the middle of a sliding tackle.
+    #[inline]
+    pub fn is_sliding(&self) -> bool {
+        self.slide_ticks > 0
+    }
+
+    /// Stops the player where he stands and clears any action in progress.
+    pub(crate) fn halt(&mut self) {
+        self.velocity = Vec2::ZERO;
+        self.slide_ticks = 0;
+        self.dive_ticks = 0;
+        self.pending_kick = None;
+        self.touch_cooldown = 0;
+    }
+}
+
+/// Top sprint speed (m/s) for a velocity stat in [0, 1]: 8 · (0.9 + 0.1·stat) (grf.md §7.7).
+pub fn top_speed(stat: f32) -> f32 {
+    SPRINT_SPEED * (0.9 + 0.1 * stat.clamp(0.0, 1.0))
+}

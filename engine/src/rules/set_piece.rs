@@ -1,0 +1,58 @@
+//! Shared set-up of a set piece (goal kick, corner kick, throw-in; free and penalty kicks with the
+//! laws issue): ball on the spot, the taker at the ball holding it until he plays it, goalkeepers
+//! back on their lines (grf.md §7.5), opponents at least 9.15 m away (Laws 13, 16, 17).
+
+use glam::Vec2;
+
+use super::Restart;
+use crate::game::{GameMode, Match};
+use crate::geometry::pitch::{BALL_RADIUS, CENTRE_CIRCLE_RADIUS, HALF_LENGTH};
+use crate::physics::Ball;
+
+/// Keepers go back to 0.98 of the half length at set pieces (grf.md §7.5).
+const KEEPER_LINE_X: f32 = 0.98 * HALF_LENGTH;
+
+pub(crate) fn set_up(m: &mut Match, restart: Restart) {
+    let side = restart.side;
+    let range = m.ranges[side.index()].clone();
+    let wants_keeper = restart.mode == GameMode::GoalKick;
+    let taker = range
+        .clone()
+        .filter(|&g| m.players[g].active && m.players[g].is_keeper() == wants_keeper)
+        .min_by(|&a, &b| {
+            let da = m.players[a].position.distance_squared(restart.spot);
+            let db = m.players[b].position.distance_squared(restart.spot);
+            da.total_cmp(&db)
+        })
+        .or_else(|| range.clone().find(|&g| m.players[g].active))
+        .unwrap_or(range.start);
+
+    // The taker faces into the pitch from behind the ball.
+    let inward = match restart.mode {
+        GameMode::ThrowIn => Vec2::new(side.attack_sign() * 0.3, -restart.spot.y.signum()).normalize(),
+        GameMode::Corner => (-restart.spot).normalize_or(Vec2::X),
+        _ => Vec2::new(side.attack_sign(), 0.0),
+    };
+    for g in 0..m.players.len() {
+        let p = &mut m.players[g];
+        p.halt();
+        if g == taker {
+            p.position = restart.spot - inward * 0.5;
+            p.facing = inward;
+        } else if p.is_keeper() {
+            p.position = Vec2::new(-p.side.attack_sign() * KEEPER_LINE_X, 0.0);
+            p.facing = Vec2::new(p.side.attack_sign(), 0.0);
+        } else if p.side != side {
+            let away = p.position - restart.spot;
+            if away.length() < CENTRE_CIRCLE_RADIUS {
+                p.position = restart.spot + away.normalize_or(inward) * CENTRE_CIRCLE_RADIUS;
+            }
+        }
+    }
+    m.ball = Ball::at_rest(restart.spot);
+    m.ball.position.z = BALL_RADIUS;
+    m.owner = Some(taker);
+    m.last_touch = Some(taker);
+    m.taker = Some(taker);
+    m.mode = restart.mode;
+}

@@ -1,0 +1,221 @@
+//! The engine's only input: a [`Scenario`], plain serde data.
+//!
+//! Every field of GRF's `ScenarioConfig` is here with GRF's default (shared/reference/grf.md §1.3,
+//! §2.2). Positions use GRF's normalised pitch coordinates: x in [-1, 1] from the left goal to the
+//! right goal, y in [-0.42, 0.42] (positive y towards the bottom of the screen). Players are given in
+//! their **own team's frame** (own goal at x = -1, attacking towards +1); the ball in the global frame.
+//! The scenario language compiles `.tl` text into this value; a compiled scenario is this value
+//! serialised to JSON.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::EngineError;
+use crate::player::Role;
+
+/// Most players a team may field (Law 3).
+pub const MAX_PLAYERS_PER_TEAM: usize = 11;
+
+/// A playable situation: configuration keys, ball start and both teams' players.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Scenario {
+    /// Scenario name, e.g. `academy_empty_goal_close`.
+    pub name: String,
+    /// Human-readable description (the `.tl` file's doc comment).
+    pub description: String,
+    /// Episode length in env steps (GRF `game_duration`, default 3000 = 90 minutes). The episode
+    /// is truncated after `game_duration + 1` steps (grf.md §7.2).
+    pub game_duration: u32,
+    /// Fixed seed (42) and no noise: identical actions give identical outcomes (default false).
+    pub deterministic: bool,
+    /// Whether the offside law is applied (default true).
+    pub offsides: bool,
+    /// End the episode when either team scores (default false).
+    pub end_episode_on_score: bool,
+    /// End the episode when the ball goes out of play: game mode turns from Normal to a set piece
+    /// (default false).
+    pub end_episode_on_out_of_play: bool,
+    /// End the episode when possession passes to the other team (default false).
+    pub end_episode_on_possession_change: bool,
+    /// Left team difficulty θ in [0, 1] (default 1.0).
+    pub left_team_difficulty: f32,
+    /// Right team difficulty θ in [0, 1] (default 0.6).
+    pub right_team_difficulty: f32,
+    /// Step index of the second-half kickoff (default 999 999 999: never).
+    pub second_half: u32,
+    /// Agents control every controllable player of a side they play (default false).
+    pub control_all_players: bool,
+    /// Ball start `[x, y]` in the global frame, normalised units (default `[0, 0]`).
+    pub ball_position: [f32; 2],
+    /// Left team's players, in observation order, in the left team's own frame.
+    pub left_team: Vec<PlayerEntry>,
+    /// Right team's players, in observation order, in the right team's own frame.
+    pub right_team: Vec<PlayerEntry>,
+    /// GRF's per-episode formation swap: when true, the two player lists change sides on every
+    /// odd episode (the 2nd, 4th, … reset), so the kickoff formation alternates (grf.md §2.2).
+    pub swap_teams_on_odd_episodes: bool,
+}
+
+/// One player of a team: role, position in the team's own frame, and flags.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlayerEntry {
+    /// The player's role; exactly one GK per team.
+    pub role: Role,
+    /// x in the team's own frame, normalised units (own goal at -1).
+    pub x: f32,
+    /// y in the team's own frame, normalised units.
+    pub y: f32,
+    /// A lazy player only stands and reacts physically (grf.md §2.2).
+    #[serde(default)]
+    pub lazy: bool,
+    /// Whether an agent may ever control this player (default true).
+    #[serde(default = "yes")]
+    pub controllable: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl PlayerEntry {
+    /// A non-lazy, controllable player.
+    pub fn new(role: Role, x: f32, y: f32) -> PlayerEntry {
+        PlayerEntry { role, x, y, lazy: false, controllable: true }
+    }
+}
+
+impl Default for Scenario {
+    fn default() -> Scenario {
+        Scenario {
+            name: String::new(),
+            description: String::new(),
+            game_duration: 3000,
+            deterministic: false,
+            offsides: true,
+            end_episode_on_score: false,
+            end_episode_on_out_of_play: false,
+            end_episode_on_possession_change: false,
+            left_team_difficulty: 1.0,
+            right_team_difficulty: 0.6,
+            second_half: 999_999_999,
+            control_all_players: false,
+            ball_position: [0.0, 0.0],
+            left_team: Vec::new(),
+            right_team: Vec::new(),
+            swap_teams_on_odd_episodes: false,
+        }
+    }
+}
+
+/// Largest |x| accepted for a player or the ball: the pitch's outer rim (60 m / 55 m).
+const MAX_ABS_X: f32 = 1.1;
+/// Largest |y| accepted: the outer rim (40 m) in normalised units.
+const MAX_ABS_Y: f32 = 0.48;
+
+impl Scenario {
+    /// Checks what the engine relies on: 1–11 players a side with exactly one goalkeeper,
+    /// finite positions inside the pitch's rim, difficulties in [0, 1], a positive duration.
+    ///
+    /// # Errors
+    /// [`EngineError::InvalidScenario`] naming the first problem found.
+    pub fn validate(&self) -> Result<(), EngineError> {
+        let bad = |reason: String| Err(EngineError::InvalidScenario { reason });
+        if self.game_duration == 0 {
+            return bad("game_duration must be at least 1 step".into());
+        }
+        for (side, d) in [("left", self.left_team_difficulty), ("right", self.right_team_difficulty)] {
+            if !(0.0..=1.0).contains(&d) {
+                return bad(format!("{side}_team_difficulty {d} is outside [0, 1]"));
+            }
+        }
+        let [bx, by] = self.ball_position;
+        if !(bx.is_finite() && by.is_finite() && bx.abs() <= MAX_ABS_X && by.abs() <= MAX_ABS_Y) {
+            return bad(format!("ball position ({bx}, {by}) is off the pitch"));
+        }
+        for (side, team) in [("left", &self.left_team), ("right", &self.right_team)] {
+            if team.is_empty() || team.len() > MAX_PLAYERS_PER_TEAM {
+                return bad(format!("{side} team has {} players; 1 to 11 are allowed", team.len()));
+            }
+            let keepers = team.iter().filter(|p| p.role == Role::GK).count();
+            if keepers != 1 {
+                return bad(format!("{side} team has {keepers} goalkeepers; exactly one is required"));
+            }
+            for (i, p) in team.iter().enumerate() {
+                if !(p.x.is_finite() && p.y.is_finite() && p.x.abs() <= MAX_ABS_X && p.y.abs() <= MAX_ABS_Y)
+                {
+                    return bad(format!("{side} player {i} ({}) at ({}, {}) is off the pitch", p.role, p.x, p.y));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Number of controllable players on each side `[left, right]` (GRF's
+    /// `controllable_left_players` / `controllable_right_players`).
+    pub fn controllable_players(&self) -> [usize; 2] {
+        [
+            self.left_team.iter().filter(|p| p.controllable).count(),
+            self.right_team.iter().filter(|p| p.controllable).count(),
+        ]
+    }
+
+    /// The (left, right) player lists for a 0-based episode index, applying the odd-episode swap.
+    pub fn teams_for_episode(&self, episode: u64) -> (&[PlayerEntry], &[PlayerEntry]) {
+        if self.swap_teams_on_odd_episodes && episode % 2 == 1 {
+            (&self.right_team, &self.left_team)
+        } else {
+            (&self.left_team, &self.right_team)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn minimal() -> Scenario {
+        Scenario {
+            left_team: vec![PlayerEntry::new(Role::GK, -1.0, 0.0)],
+            right_team: vec![PlayerEntry::new(Role::GK, -1.0, 0.0)],
+            ..Scenario::default()
+        }
+    }
+
+    #[test]
+    fn defaults_are_grf_defaults() {
+        let s = Scenario::default();
+        assert_eq!(s.game_duration, 3000);
+        assert!(s.offsides && !s.deterministic);
+        assert_eq!((s.left_team_difficulty, s.right_team_difficulty), (1.0, 0.6));
+        assert_eq!(s.second_half, 999_999_999);
+    }
+
+    #[test]
+    fn json_round_trip_and_defaults_fill_in() {
+        let s = minimal();
+        let text = serde_json::to_string(&s).unwrap();
+        let back: Scenario = serde_json::from_str(&text).unwrap();
+        assert_eq!(s, back);
+        let sparse: Scenario = serde_json::from_str(
+            r#"{"left_team":[{"role":"GK","x":-1,"y":0}],"right_team":[{"role":"GK","x":-1,"y":0}]}"#,
+        )
+        .unwrap();
+        assert_eq!(sparse, s);
+        assert!(sparse.left_team[0].controllable);
+    }
+
+    #[test]
+    fn validation_names_the_problem() {
+        let mut s = minimal();
+        assert!(s.validate().is_ok());
+        s.left_team.push(PlayerEntry::new(Role::GK, 0.0, 0.0));
+        assert!(s.validate().unwrap_err().to_string().contains("2 goalkeepers"));
+        let mut s = minimal();
+        s.right_team[0].x = f32::NAN;
+        assert!(s.validate().unwrap_err().to_string().contains("off the pitch"));
+        let mut s = minimal();
+        s.left_team_difficulty = 1.5;
+        assert!(s.validate().is_err());
+    }
+}

@@ -53,17 +53,6 @@ pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: 
     let pressure = nearest(opponents, me.position);
     let noise = difficulty.decision_noise;
 
-    // Shot.
-    let mut best_value = shot_value(pos_t, opponents, frame) * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 };
-    best_value += rng.noise(noise);
-    let keeper_y = opponents.iter().find(|o| o.is_keeper() && o.active).map(|k| k.position.y);
-    let mut target = shot_target(side.attack_sign(), keeper_y, me.position.y);
-    target.y += rng.noise(difficulty.aim_error);
-    let mut best = Plan {
-        kick: Some(Kick { kind: KickKind::Shot, target: KickTarget::Point(target), height: 0.5, power: 0.6 }),
-        ..Plan::go(me.position, 0.0, target - me.position)
-    };
-
     // Dribble: towards goal, bending away from opponents in front.
     let mut dir = (goal_t - pos_t).normalize_or(Vec2::X);
     let mut space = 20.0f32;
@@ -80,13 +69,28 @@ pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: 
         dir.y -= pos_t.y.signum() * 0.8;
     }
     let dir = dir.normalize_or(Vec2::X);
-    let dribble_value = 0.25 + 0.35 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0) - if pressure < 2.0 { 0.25 } else { 0.0 }
+    let mut best_value = 0.25 + 0.35 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0) - if pressure < 2.0 { 0.25 } else { 0.0 }
         + rng.noise(noise);
-    if dribble_value > best_value {
-        best_value = dribble_value;
-        let speed = if space > 6.0 { me.max_speed } else { 5.0 };
-        let to = frame.vec2(pos_t + dir * 6.0);
-        best = Plan { dribble: pressure < 1.8, ..Plan::go(to, speed, to - me.position) };
+    let speed = if space > 6.0 { me.max_speed } else { 5.0 };
+    let to = frame.vec2(pos_t + dir * 8.0);
+    let mut best = Plan { dribble: pressure < 1.8, run_through: true, ..Plan::go(to, speed, to - me.position) };
+    // A player who just got the ball takes a touch first, unless an opponent is on him.
+    if view.owner_ticks < 12 && pressure > 2.5 {
+        return best;
+    }
+
+    // Shot.
+    let shot = shot_value(pos_t, opponents, frame) * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 };
+    let shot = shot + rng.noise(noise);
+    let keeper_y = opponents.iter().find(|o| o.is_keeper() && o.active).map(|k| k.position.y);
+    let mut target = shot_target(side.attack_sign(), keeper_y, me.position.y);
+    target.y += rng.noise(difficulty.aim_error);
+    if shot > best_value {
+        best_value = shot;
+        best = Plan {
+            kick: Some(Kick { kind: KickKind::Shot, target: KickTarget::Point(target), height: 0.5, power: 0.6 }),
+            ..Plan::go(me.position, 0.0, target - me.position)
+        };
     }
 
     // Passes.
@@ -118,7 +122,8 @@ pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: 
         let risk = match kind {
             KickKind::ShortPass => 0.0,
             KickKind::LongPass => 0.15,
-            _ => 0.25 + if lane_ok { 0.0 } else { 0.1 },
+            _ if d < 15.0 => continue,
+            _ => 0.4,
         };
         let value = 0.15 + 0.45 * progress + 0.35 * closeness + 0.3 * open - risk - if d > 35.0 { 0.15 } else { 0.0 }
             + if pressure < 2.5 { 0.15 } else { 0.0 }

@@ -47,6 +47,8 @@ pub struct MatchView<'a> {
     pub set_piece_ticks: u32,
     /// In-play tick counter.
     pub tick: u64,
+    /// Ticks the current owner has had the ball.
+    pub owner_ticks: u32,
 }
 
 impl MatchView<'_> {
@@ -76,6 +78,9 @@ pub struct Plan {
     pub kick: Option<Kick>,
     /// Slide (or, for a keeper, dive) now (sent once).
     pub slide: bool,
+    /// Run through the target at full speed instead of slowing down to stop on it (chasing a
+    /// ball).
+    pub run_through: bool,
 }
 
 impl Plan {
@@ -138,7 +143,7 @@ impl TeamAi {
             let to = plan.target - p.position;
             let dist = to.length();
             // Arrive: slow down within the last metres so players settle on their spots.
-            let speed = plan.speed.min(dist * 2.5);
+            let speed = if plan.run_through { plan.speed } else { plan.speed.min(dist * 2.5) };
             let velocity = if dist > 0.15 { to * (speed / dist) } else { Vec2::ZERO };
             inputs[i] = PlayerInput {
                 velocity,

@@ -26,9 +26,11 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Diffic
                     let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
                     carrier.position + carrier.velocity * 0.3 + (own_goal - carrier.position).normalize_or_zero() * 0.6
                 }
+                // Close to a loose ball: go straight at it.
+                None if p.position.distance(ball) < 3.0 => ball + view.ball.velocity.truncate() * 0.1,
                 None => meet,
             };
-            return Some(Plan::go(target, p.max_speed, ball - p.position));
+            return Some(Plan { run_through: true, ..Plan::go(target, p.max_speed, ball - p.position) });
         }
     }
     if analysis.second == Some(g) && view.owner.is_some() && difficulty.theta >= 0.3 {

@@ -68,15 +68,15 @@ pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2
             (dir * speed.min(MAX_GROUND_PASS)).extend(0.0)
         }
         KickKind::LongPass => {
-            // Driven pass: 16° elevation, first bounce at about three quarters of the way.
-            let (c, s) = (0.961_262_1, 0.275_637_4);
-            let speed = lofted_speed(distance * 0.72, c, s).min(30.0);
+            // Driven pass: 14° elevation, first bounce at about 70 % of the way.
+            let (c, s) = (0.970_295_7, 0.241_921_9);
+            let speed = lofted_speed(distance * 0.7, c, s).min(30.0);
             Vec3::new(dir.x * c * speed, dir.y * c * speed, s * speed)
         }
         KickKind::HighPass => {
-            // Lofted pass: 42° elevation, lands near the receiver.
-            let (c, s) = (0.743_144_8, 0.669_130_6);
-            let speed = lofted_speed(distance * 0.92, c, s).min(30.0);
+            // Lofted pass: 30° elevation, lands just short of the receiver.
+            let (c, s) = (0.866_025_4, 0.5);
+            let speed = lofted_speed(distance * 0.88, c, s).min(30.0);
             Vec3::new(dir.x * c * speed, dir.y * c * speed, s * speed)
         }
         KickKind::Shot => {

@@ -56,6 +56,8 @@ pub struct Match {
     pub(crate) colliders: Arc<PitchColliders>,
     /// Player (global index) with the ball at his feet.
     pub(crate) owner: Option<usize>,
+    /// Ticks the current owner has had the ball.
+    pub(crate) owner_ticks: u32,
     /// Player who touched the ball last.
     pub(crate) last_touch: Option<usize>,
     pub(crate) score: [u32; 2],
@@ -109,6 +111,7 @@ impl Match {
             ball: Ball::at_rest(ball_start),
             colliders: Arc::new(PitchColliders::new()),
             owner: None,
+            owner_ticks: 0,
             last_touch: None,
             score: [0, 0],
             mode: GameMode::Normal,

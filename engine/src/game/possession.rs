@@ -8,8 +8,10 @@ use crate::geometry::pitch::{in_penalty_area, BALL_RADIUS};
 
 /// Horizontal reach (m) of an outfield player for a loose ball.
 const FOOT_REACH: f32 = 0.7;
-/// Highest ball (m) an outfield player controls (chest height; headers come with the laws issue).
-const FOOT_HEIGHT: f32 = 0.9;
+/// Highest ball (m) an outfield player controls (head height).
+const FOOT_HEIGHT: f32 = 1.9;
+/// Above this height (m) control is with chest or head, and only of slower balls.
+const CHEST_HEIGHT: f32 = 0.9;
 /// Goalkeeper's reach (m) inside his area, standing and diving; highest catch (m).
 const HAND_REACH: f32 = 1.1;
 const DIVE_REACH: f32 = 2.0;
@@ -108,7 +110,8 @@ impl Match {
         self.last_touch = Some(g);
         let p = &self.players[g];
         let relative = (ball.velocity - p.velocity.extend(0.0)).length();
-        let limit = if keeper_hands { CATCH_SPEED } else { TRAP_SPEED } * (0.6 + 0.4 * self.skill(g));
+        let body = if !keeper_hands && ball.position.z > CHEST_HEIGHT { 0.6 } else { 1.0 };
+        let limit = if keeper_hands { CATCH_SPEED } else { TRAP_SPEED } * (0.6 + 0.4 * self.skill(g)) * body;
         if p.is_sliding() && !keeper_hands {
             // A slide knocks the ball on in the slide's direction.
             self.ball.velocity = (p.velocity * 1.2).extend(0.0);

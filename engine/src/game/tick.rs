@@ -42,7 +42,9 @@ impl Match {
         separate_players(&mut self.players);
         let before = self.ball.position;
         self.move_ball();
+        let owner_before = self.owner;
         self.settle_possession();
+        self.owner_ticks = if self.owner.is_some() && self.owner == owner_before { self.owner_ticks + 1 } else { 0 };
         if let Some(stoppage) = rules::judge(before, self.ball.position, self.last_touch.map(|g| self.players[g].side)) {
             self.stop_play(stoppage);
         }
@@ -72,6 +74,7 @@ impl Match {
             taker: self.taker,
             set_piece_ticks: self.set_piece_ticks,
             tick: self.in_play_ticks,
+            owner_ticks: self.owner_ticks,
         };
         for side in 0..2 {
             let range = self.ranges[side].clone();

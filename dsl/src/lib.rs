@@ -1,0 +1,28 @@
+//! touchline's scenario front end: turns what a user names or writes into a checked
+//! [`Scenario`](touchline_engine::Scenario).
+//!
+//! A scenario comes from one of three places (see [`load`]):
+//!
+//! - the **stdlib**, by name (`academy_empty_goal_close`, `11_vs_11_stochastic`, …): the scenarios of
+//!   Google Research Football, embedded in this crate ([`stdlib`]);
+//! - a **compiled scenario**, a `.json` file holding a `Scenario` serialised with serde ([`load_json`]);
+//! - a **`.tl` source** in the scenario language (not available yet: loading one reports `tl::E005`).
+//!
+//! Every failure is a [`LoadError`], a [`miette::Diagnostic`] with a stable code (`tl::E001` …
+//! `tl::E005`); [`render_plain`] renders one as fixed, colourless text for snapshots and Python
+//! exception messages.
+//!
+//! ```
+//! let scenario = touchline_dsl::load("academy_empty_goal_close").unwrap();
+//! assert_eq!(scenario.game_duration, 400);
+//! assert_eq!(scenario.ball_position, [0.77, 0.0]);
+//! ```
+#![deny(missing_docs)]
+
+mod diag;
+mod load;
+pub mod stdlib;
+mod suggest;
+
+pub use diag::{JsonError, LoadError, render_plain};
+pub use load::{load, load_file, load_json};

@@ -1,0 +1,148 @@
+//! The shipped scenarios (`stdlib-scenarios/*.json`), embedded at compile time.
+//!
+//! One scenario per top-level scenario of Google Research Football (shared/reference/grf.md §2.1,
+//! tables in §2.3 and §2.4), in compiled form: a [`Scenario`] serialised as pretty-printed JSON.
+//! Every embedded file is tested to parse, validate and be in canonical form.
+
+use touchline_engine::Scenario;
+
+/// `(name, compiled JSON)` for every stdlib scenario, sorted by name.
+const SCENARIOS: &[(&str, &str)] = &[
+    (
+        "11_vs_11_competition",
+        include_str!("../../stdlib-scenarios/11_vs_11_competition.json"),
+    ),
+    (
+        "11_vs_11_easy_stochastic",
+        include_str!("../../stdlib-scenarios/11_vs_11_easy_stochastic.json"),
+    ),
+    (
+        "11_vs_11_hard_stochastic",
+        include_str!("../../stdlib-scenarios/11_vs_11_hard_stochastic.json"),
+    ),
+    (
+        "11_vs_11_kaggle",
+        include_str!("../../stdlib-scenarios/11_vs_11_kaggle.json"),
+    ),
+    (
+        "11_vs_11_stochastic",
+        include_str!("../../stdlib-scenarios/11_vs_11_stochastic.json"),
+    ),
+    (
+        "1_vs_1_easy",
+        include_str!("../../stdlib-scenarios/1_vs_1_easy.json"),
+    ),
+    ("5_vs_5", include_str!("../../stdlib-scenarios/5_vs_5.json")),
+    (
+        "academy_3_vs_1_with_keeper",
+        include_str!("../../stdlib-scenarios/academy_3_vs_1_with_keeper.json"),
+    ),
+    (
+        "academy_corner",
+        include_str!("../../stdlib-scenarios/academy_corner.json"),
+    ),
+    (
+        "academy_counterattack_easy",
+        include_str!("../../stdlib-scenarios/academy_counterattack_easy.json"),
+    ),
+    (
+        "academy_counterattack_hard",
+        include_str!("../../stdlib-scenarios/academy_counterattack_hard.json"),
+    ),
+    (
+        "academy_empty_goal",
+        include_str!("../../stdlib-scenarios/academy_empty_goal.json"),
+    ),
+    (
+        "academy_empty_goal_close",
+        include_str!("../../stdlib-scenarios/academy_empty_goal_close.json"),
+    ),
+    (
+        "academy_pass_and_shoot_with_keeper",
+        include_str!("../../stdlib-scenarios/academy_pass_and_shoot_with_keeper.json"),
+    ),
+    (
+        "academy_run_pass_and_shoot_with_keeper",
+        include_str!("../../stdlib-scenarios/academy_run_pass_and_shoot_with_keeper.json"),
+    ),
+    (
+        "academy_run_to_score",
+        include_str!("../../stdlib-scenarios/academy_run_to_score.json"),
+    ),
+    (
+        "academy_run_to_score_with_keeper",
+        include_str!("../../stdlib-scenarios/academy_run_to_score_with_keeper.json"),
+    ),
+    (
+        "academy_single_goal_versus_lazy",
+        include_str!("../../stdlib-scenarios/academy_single_goal_versus_lazy.json"),
+    ),
+    (
+        "test_example_multiagent",
+        include_str!("../../stdlib-scenarios/test_example_multiagent.json"),
+    ),
+];
+
+/// Names of all stdlib scenarios, sorted (byte order), e.g. `"academy_empty_goal_close"`.
+const NAMES: &[&str] = &[
+    "11_vs_11_competition",
+    "11_vs_11_easy_stochastic",
+    "11_vs_11_hard_stochastic",
+    "11_vs_11_kaggle",
+    "11_vs_11_stochastic",
+    "1_vs_1_easy",
+    "5_vs_5",
+    "academy_3_vs_1_with_keeper",
+    "academy_corner",
+    "academy_counterattack_easy",
+    "academy_counterattack_hard",
+    "academy_empty_goal",
+    "academy_empty_goal_close",
+    "academy_pass_and_shoot_with_keeper",
+    "academy_run_pass_and_shoot_with_keeper",
+    "academy_run_to_score",
+    "academy_run_to_score_with_keeper",
+    "academy_single_goal_versus_lazy",
+    "test_example_multiagent",
+];
+
+/// Names of all stdlib scenarios, sorted in byte order.
+pub fn names() -> &'static [&'static str] {
+    NAMES
+}
+
+/// The compiled JSON text of the stdlib scenario `name`, or `None` if there is no such scenario.
+pub fn source(name: &str) -> Option<&'static str> {
+    SCENARIOS
+        .binary_search_by(|(n, _)| (*n).cmp(name))
+        .ok()
+        .map(|i| SCENARIOS[i].1)
+}
+
+/// The stdlib scenario `name`, parsed; `None` if there is no such scenario.
+///
+/// The embedded files are tested to parse and to pass [`Scenario::validate`], so a known name
+/// always gives `Some`. Use [`crate::load`] to get a [`crate::LoadError`] for unknown names.
+pub fn scenario(name: &str) -> Option<Scenario> {
+    source(name).and_then(|text| serde_json::from_str(text).ok())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tables_are_sorted_and_agree() {
+        assert!(NAMES.windows(2).all(|w| w[0] < w[1]));
+        let from_table: Vec<&str> = SCENARIOS.iter().map(|(n, _)| *n).collect();
+        assert_eq!(from_table, NAMES);
+    }
+
+    #[test]
+    fn lookup() {
+        assert!(source("academy_corner").is_some());
+        assert!(source("academy_cornerr").is_none());
+        assert_eq!(scenario("5_vs_5").map(|s| s.left_team.len()), Some(5));
+        assert!(scenario("").is_none());
+    }
+}

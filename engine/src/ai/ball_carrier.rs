@@ -80,8 +80,8 @@ pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: 
     }
 
     // Shot.
-    let shot = shot_value(pos_t, opponents, frame) * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 };
-    let shot = shot + rng.noise(noise);
+    let base = shot_value(pos_t, opponents, frame);
+    let shot = if base > 0.0 { base * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 } + rng.noise(noise) } else { f32::NEG_INFINITY };
     let keeper_y = opponents.iter().find(|o| o.is_keeper() && o.active).map(|k| k.position.y);
     let mut target = shot_target(side.attack_sign(), keeper_y, me.position.y);
     target.y += rng.noise(difficulty.aim_error);

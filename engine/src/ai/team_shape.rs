@@ -22,7 +22,7 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame) -> Vec2 {
     if ours && p.role.is_attacker() && home.x > -0.25 * HALF_LENGTH {
         // Off-the-ball run: get ahead of the ball, towards the goal, into the channel.
         x = x.max(ball.x + 8.0);
-        y = 0.7 * y;
+        y *= 0.7;
     }
     if !ours && p.role.is_defender() {
         // The back line stays goal-side of the ball.

@@ -13,10 +13,11 @@ use crate::geometry::Side;
 /// else the player nearest the ball in time (goalkeepers only when no one else can be controlled).
 pub(crate) fn designated(game: &Match, side: Side) -> Option<usize> {
     let team = game.team(side);
-    if let Some((s, i)) = game.owner() {
-        if s == side && selectable(game, side, i) {
-            return Some(i);
-        }
+    if let Some((s, i)) = game.owner()
+        && s == side
+        && selectable(game, side, i)
+    {
+        return Some(i);
     }
     let ball = game.ball().xy();
     let time = |i: usize| team[i].position.distance(ball) / team[i].max_speed.max(0.1);

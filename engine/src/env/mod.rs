@@ -241,8 +241,8 @@ impl Env {
             return Err(EngineError::EpisodeOver);
         }
         self.fresh = false;
-        for i in 0..self.controllers.len() {
-            let action = self.anti_stalling(i, actions[i]);
+        for (i, &action) in actions.iter().enumerate() {
+            let action = self.anti_stalling(i, action);
             self.apply_action(i, action);
         }
         let mut ticks = 0;
@@ -277,7 +277,7 @@ impl Env {
             self.rewards[i] = r + bonus;
         }
         let terminated = self.end.terminated(&self.scenario, score, self.game.mode(), self.game.owner().map(|o| o.0));
-        let truncated = self.steps >= self.scenario.game_duration + 1;
+        let truncated = self.steps > self.scenario.game_duration;
         self.done = terminated || truncated;
         self.info = StepInfo {
             score,

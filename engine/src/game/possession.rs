@@ -14,11 +14,13 @@ const FOOT_HEIGHT: f32 = 1.9;
 const CHEST_HEIGHT: f32 = 0.9;
 /// Goalkeeper's reach (m) inside his area, standing and diving; highest catch (m).
 const HAND_REACH: f32 = 1.1;
-const DIVE_REACH: f32 = 2.0;
+const DIVE_REACH: f32 = 1.8;
 const HAND_HEIGHT: f32 = 2.7;
 /// Fastest ball (m/s, relative) an outfield player at difficulty 1 traps; a keeper catches.
 const TRAP_SPEED: f32 = 13.0;
 const CATCH_SPEED: f32 = 24.0;
+/// A ball coming at a keeper faster than this (m/s) is a shot he may not reach.
+const SHOT_SPEED: f32 = 12.0;
 /// Standing tackle: range (m) and success chance per tick at equal skill.
 const TACKLE_RANGE: f32 = 0.9;
 const TACKLE_CHANCE: f32 = 0.025;
@@ -107,9 +109,19 @@ impl Match {
             }
         }
         let Some((g, keeper_hands)) = best else { return };
-        self.last_touch = Some(g);
         let p = &self.players[g];
         let relative = (ball.velocity - p.velocity.extend(0.0)).length();
+        if keeper_hands && relative > SHOT_SPEED {
+            // A shot: the keeper gets a hand to it only with a chance that falls with the ball's
+            // speed and with how far he must stretch; a miss lets it fly on.
+            let stretch = best_d2.sqrt() / DIVE_REACH;
+            let chance = (1.15 - 0.7 * stretch - (relative - SHOT_SPEED) / 30.0).clamp(0.05, 0.95) * (0.75 + 0.25 * self.skill(g));
+            if !self.rng.chance(chance) {
+                self.players[g].touch_cooldown = 30;
+                return;
+            }
+        }
+        self.last_touch = Some(g);
         let body = if !keeper_hands && ball.position.z > CHEST_HEIGHT { 0.6 } else { 1.0 };
         let limit = if keeper_hands { CATCH_SPEED } else { TRAP_SPEED } * (0.6 + 0.4 * self.skill(g)) * body;
         if p.is_sliding() && !keeper_hands {

@@ -96,10 +96,10 @@ impl Match {
                 }
                 // A kick is a one-tick request.
                 self.inputs[g].kick = None;
-            } else if self.owner == Some(g) {
-                if let Some((kick, _)) = self.players[g].pending_kick.take() {
-                    self.execute_kick(g, kick);
-                }
+            } else if self.owner == Some(g)
+                && let Some((kick, _)) = self.players[g].pending_kick.take()
+            {
+                self.execute_kick(g, kick);
             }
             let p = &mut self.players[g];
             if input.slide && self.owner != Some(g) && p.slide_ticks == 0 && p.dive_ticks == 0 && self.mode == GameMode::Normal {
@@ -223,6 +223,7 @@ impl Match {
         for p in &mut self.players {
             p.velocity *= 0.97;
             p.position += p.velocity * TICK_SECONDS;
+            crate::physics::keep_inside_rim(p);
         }
         if ticks_left > 1 {
             self.phase = Phase::Dead { ticks_left: ticks_left - 1, restart };

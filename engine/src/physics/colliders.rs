@@ -139,10 +139,10 @@ impl PitchColliders {
                 continue;
             }
             for &(handle, surface) in &self.goals[i] {
-                if let Some(hit) = self.cast(handle, surface, from, velocity, dt) {
-                    if best.is_none_or(|b| hit.time < b.time) {
-                        best = Some(hit);
-                    }
+                if let Some(hit) = self.cast(handle, surface, from, velocity, dt)
+                    && best.is_none_or(|b| hit.time < b.time)
+                {
+                    best = Some(hit);
                 }
             }
         }

@@ -47,11 +47,22 @@ pub(crate) fn move_player(player: &mut Player, input: &PlayerInput, limits: Moti
     let len2 = dv.length_squared();
     player.velocity += if len2 > max_dv * max_dv { dv * (max_dv / len2.sqrt()) } else { dv };
     player.position += player.velocity * dt;
-    player.position.x = player.position.x.clamp(-RIM_HALF_LENGTH, RIM_HALF_LENGTH);
-    player.position.y = player.position.y.clamp(-RIM_HALF_WIDTH, RIM_HALF_WIDTH);
 
     let look = if desired.length_squared() > 0.25 { desired } else { input.look };
     turn_towards(&mut player.facing, look);
+}
+
+/// Keeps a player inside the pitch's rim (the advertising boards), stopping him against it.
+pub(crate) fn keep_inside_rim(player: &mut Player) {
+    let p = &mut player.position;
+    if p.x.abs() > RIM_HALF_LENGTH {
+        p.x = p.x.clamp(-RIM_HALF_LENGTH, RIM_HALF_LENGTH);
+        player.velocity.x = 0.0;
+    }
+    if p.y.abs() > RIM_HALF_WIDTH {
+        p.y = p.y.clamp(-RIM_HALF_WIDTH, RIM_HALF_WIDTH);
+        player.velocity.y = 0.0;
+    }
 }
 
 /// Turns the unit vector `facing` towards `target` by at most one tick's turn.
@@ -73,7 +84,7 @@ fn turn_towards(facing: &mut Vec2, target: Vec2) {
 }
 
 /// Pushes apart every pair of overlapping player bodies (equal shares) and removes the
-/// approaching part of their relative velocity.
+/// approaching part of their relative velocity; then keeps everyone inside the rim.
 pub(crate) fn separate_players(players: &mut [Player]) {
     const MIN_DIST: f32 = 2.0 * BODY_RADIUS;
     let n = players.len();
@@ -102,5 +113,8 @@ pub(crate) fn separate_players(players: &mut [Player]) {
                 players[j].velocity -= impulse;
             }
         }
+    }
+    for p in players.iter_mut() {
+        keep_inside_rim(p);
     }
 }

@@ -1,5 +1,6 @@
 //! Players: roles and per-player state.
 
+#[expect(clippy::module_inception, reason = "one main type per file, named after it")]
 mod player;
 mod role;
 

@@ -6,7 +6,7 @@ use glam::Vec2;
 
 use super::Restart;
 use crate::game::{GameMode, Match};
-use crate::geometry::pitch::{BALL_RADIUS, CENTRE_CIRCLE_RADIUS, HALF_LENGTH};
+use crate::geometry::pitch::{BALL_RADIUS, CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 use crate::physics::Ball;
 
 /// Keepers go back to 0.98 of the half length at set pieces (grf.md §7.5).
@@ -45,7 +45,9 @@ pub(crate) fn set_up(m: &mut Match, restart: Restart) {
         } else if p.side != side {
             let away = p.position - restart.spot;
             if away.length() < CENTRE_CIRCLE_RADIUS {
-                p.position = restart.spot + away.normalize_or(inward) * CENTRE_CIRCLE_RADIUS;
+                let moved = restart.spot + away.normalize_or(inward) * CENTRE_CIRCLE_RADIUS;
+                // Stay on the field: near a line the distance is kept along it instead.
+                p.position = Vec2::new(moved.x.clamp(-HALF_LENGTH, HALF_LENGTH), moved.y.clamp(-HALF_WIDTH, HALF_WIDTH));
             }
         }
     }

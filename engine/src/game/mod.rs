@@ -212,6 +212,23 @@ impl Match {
         }
     }
 
+    /// Puts the ball loose at `position` (m) with `velocity` (m/s), as last touched by `last_touch`
+    /// (side, index in team). For tests, tools and scenarios that start from a moment of play.
+    pub fn place_ball(&mut self, position: glam::Vec3, velocity: glam::Vec3, last_touch: Option<(Side, usize)>) {
+        self.ball = Ball { position, velocity, spin: glam::Vec3::ZERO };
+        self.owner = None;
+        self.owner_ticks = 0;
+        self.last_touch = last_touch.map(|(side, i)| self.global_index(side, i));
+    }
+
+    /// Moves `side`'s player `index` to `position` (m), standing still.
+    pub fn place_player(&mut self, side: Side, index: usize, position: glam::Vec2) {
+        let g = self.global_index(side, index);
+        let p = &mut self.players[g];
+        p.halt();
+        p.position = position;
+    }
+
     /// A 64-bit fingerprint of the dynamic state (positions, velocities, ball, score, mode), for
     /// determinism tests. Equal states give equal hashes on every platform.
     pub fn state_hash(&self) -> u64 {

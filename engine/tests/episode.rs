@@ -1,0 +1,200 @@
+//! The episode loop against GRF's figures (grf.md §5.3, §6, §7.2): steps_left, termination and
+//! truncation, sticky actions seen in each controller's frame, Scoring and Checkpoint rewards,
+//! controlled-player switching, and errors.
+
+mod common;
+
+use touchline_engine::{Action, EngineError, Env, EnvConfig, GameMode};
+
+#[test]
+fn steps_left_and_the_time_limit_follow_grf() {
+    // A 10-step game ends after 11 steps (grf.md §7.2: the second-half test).
+    let mut env = Env::new(common::empty_pitch(10), 0).unwrap();
+    assert_eq!(env.observations()[0].steps_left, 11);
+    assert_eq!(env.info().steps_left, 11);
+    for k in 1..=11 {
+        let out = env.step(&[Action::Idle]).unwrap();
+        assert_eq!(env.observations()[0].steps_left, 11 - k);
+        assert_eq!(out.truncated, k == 11, "step {k}");
+        assert!(!out.terminated);
+    }
+    assert!(env.is_done());
+    assert_eq!(env.step(&[Action::Idle]), Err(EngineError::EpisodeOver));
+    // A reset starts again.
+    env.reset();
+    assert_eq!(env.observations()[0].steps_left, 11);
+    assert!(env.step(&[Action::Idle]).is_ok());
+}
+
+#[test]
+fn academy_drills_start_with_401_steps_left() {
+    let env = common::env("academy_empty_goal", 0);
+    assert_eq!(env.observations()[0].steps_left, 401);
+    let env = common::env("11_vs_11_stochastic", 0);
+    assert_eq!(env.observations()[0].steps_left, 3001);
+}
+
+#[test]
+fn bad_actions_are_errors_not_panics() {
+    let mut env = common::env("academy_empty_goal_close", 0);
+    assert_eq!(env.step(&[]), Err(EngineError::ActionCount { expected: 1, got: 0 }));
+    assert!(matches!(env.step_indices(&[19]), Err(EngineError::UnknownAction { index: 19, .. })));
+    assert!(env.step_indices(&[5]).is_ok());
+    let config = EnvConfig { left_agents: 3, ..EnvConfig::default() };
+    assert!(matches!(Env::with_config(common::scenario("academy_empty_goal"), config, 0), Err(EngineError::InvalidConfig { .. })));
+}
+
+#[test]
+fn sticky_actions_are_seen_in_each_controllers_frame() {
+    // GRF test___control_all_players: 1 + 1 agents, actions [left, right].
+    let config = EnvConfig { left_agents: 1, right_agents: 1, ..EnvConfig::default() };
+    let mut env = Env::with_config(common::scenario("11_vs_11_stochastic"), config, 0).unwrap();
+    assert_eq!(env.observations()[0].sticky_actions, [0; 10]);
+    env.step(&[Action::Idle, Action::Idle]).unwrap();
+    env.step(&[Action::Left, Action::Right]).unwrap();
+    assert_eq!(env.observations()[0].sticky_actions[0], 1);
+    assert_eq!(env.observations()[1].sticky_actions[4], 1);
+    env.step(&[Action::Sprint, Action::Dribble]).unwrap();
+    assert_eq!(env.observations()[0].sticky_actions, [1, 0, 0, 0, 0, 0, 0, 0, 1, 0]);
+    assert_eq!(env.observations()[1].sticky_actions, [0, 0, 0, 0, 1, 0, 0, 0, 0, 1]);
+    env.step(&[Action::ReleaseDirection, Action::ReleaseDribble]).unwrap();
+    assert_eq!(env.observations()[0].sticky_actions, [0, 0, 0, 0, 0, 0, 0, 0, 1, 0]);
+    assert_eq!(env.observations()[1].sticky_actions[..8], [0, 0, 0, 0, 1, 0, 0, 0]);
+    // The right controller's "right" runs towards the left goal in the global frame.
+    let right_active = env.observations()[1].active as usize;
+    let v = env.game().team(touchline_engine::Side::Right)[right_active].velocity;
+    assert!(v.x < -1.0, "velocity {v}");
+}
+
+#[test]
+fn a_right_controller_sees_the_pitch_turned_by_180_degrees() {
+    let config = EnvConfig { left_agents: 1, right_agents: 1, ..EnvConfig::default() };
+    let mut env = Env::with_config(common::scenario("11_vs_11_stochastic"), config, 4).unwrap();
+    for _ in 0..30 {
+        env.step(&[Action::Right, Action::Right]).unwrap();
+    }
+    let (l, r) = (&env.observations()[0], &env.observations()[1]);
+    for (a, b) in l.left_team.iter().zip(&r.right_team) {
+        assert_eq!([a[0], a[1]], [-b[0], -b[1]]);
+    }
+    for (a, b) in l.right_team.iter().zip(&r.left_team) {
+        assert_eq!([a[0], a[1]], [-b[0], -b[1]]);
+    }
+    assert_eq!([l.ball[0], l.ball[1], l.ball[2]], [-r.ball[0], -r.ball[1], r.ball[2]]);
+    assert_eq!(l.score, [r.score[1], r.score[0]]);
+    if l.ball_owned_team >= 0 {
+        assert_eq!(l.ball_owned_team, 1 - r.ball_owned_team);
+    }
+}
+
+#[test]
+fn a_goal_is_worth_exactly_two_with_checkpoints() {
+    let mut env = common::env_with_checkpoints("academy_empty_goal_close", 0);
+    let mut rewards = Vec::new();
+    let (_, total) = common::play(&mut env, |k, _| if k < 8 { Action::Right } else { Action::Shot });
+    rewards.push(total);
+    assert_eq!(env.info().score, [1, 0]);
+    assert!((total - 2.0).abs() < 1e-4, "total {total}");
+    assert_eq!(env.info().score_reward, 1.0);
+}
+
+#[test]
+fn checkpoints_pay_as_the_ball_is_carried_towards_goal() {
+    // GRF test_get_state_wrapper: in academy_empty_goal, stepping right, the reward sum reaches
+    // 0.9 in 0.1 increments before the goal.
+    let mut env = common::env_with_checkpoints("academy_empty_goal", 0);
+    let mut sum = 0.0f32;
+    let mut steps = 0;
+    while sum < 0.85 {
+        let out = env.step(&[Action::Right]).unwrap();
+        let r = env.rewards()[0];
+        assert!(r.abs() < 1e-6 || (r - 0.1).abs() < 1e-4 || (r - 0.2).abs() < 1e-4, "reward {r}");
+        sum += r;
+        steps += 1;
+        assert!(!out.terminated && steps < 200, "ended before 0.9: sum {sum}");
+    }
+    assert!((sum - 0.9).abs() < 0.01, "sum {sum}");
+    assert_eq!(env.info().score, [0, 0]);
+}
+
+#[test]
+fn running_right_scores_in_the_empty_goal() {
+    // GRF test_score_empty_goal: ball and controlled player never fall back by more than 0.01 per
+    // step, and the episode ends with reward 1.
+    let mut env = common::env("academy_empty_goal", 0);
+    let mut last = (env.observations()[0].ball[0], env.observations()[0].left_team[1][0]);
+    for step in 0..120 {
+        let out = env.step(&[Action::Right]).unwrap();
+        let o = &env.observations()[0];
+        let now = (o.ball[0], o.left_team[o.active as usize][0]);
+        if !out.terminated {
+            assert!(now.0 >= last.0 - 0.01 && now.1 >= last.1 - 0.01, "step {step}: {last:?} -> {now:?}");
+        }
+        last = now;
+        if out.terminated {
+            assert_eq!(env.rewards()[0], 1.0);
+            return;
+        }
+    }
+    panic!("no goal in 120 steps");
+}
+
+#[test]
+fn out_of_play_ends_an_academy_episode() {
+    // Run the ball over the bottom touchline.
+    let mut env = common::env("academy_empty_goal_close", 0);
+    let (steps, reward) = common::play(&mut env, |_, _| Action::Bottom);
+    assert!(steps < 100);
+    assert_eq!(reward, 0.0);
+    assert_eq!(env.info().game_mode, GameMode::ThrowIn);
+}
+
+#[test]
+fn single_agent_control_never_goes_to_the_keeper() {
+    let mut env = common::env("11_vs_11_easy_stochastic", 2);
+    let mut policy = common::RandomPolicy::new(9);
+    let mut switches = 0;
+    let mut last = env.observations()[0].active;
+    for _ in 0..1500 {
+        let out = env.step(&[policy.action(env.action_set())]).unwrap();
+        let o = &env.observations()[0];
+        assert!(o.active >= 1, "the keeper (index 0) was selected");
+        assert_eq!(o.designated, o.active);
+        if o.active != last {
+            switches += 1;
+        }
+        last = o.active;
+        if o.ball_owned_team == 0 && o.ball_owned_player != 0 {
+            assert_eq!(o.active, o.ball_owned_player, "control goes to our ball carrier");
+        }
+        if out.truncated {
+            break;
+        }
+    }
+    assert!(switches > 5, "control should follow the ball ({switches} switches)");
+}
+
+#[test]
+fn every_controllable_player_has_a_fixed_controller_when_all_are_controlled() {
+    let config = EnvConfig { left_agents: 11, ..EnvConfig::default() };
+    let mut env = Env::with_config(common::scenario("11_vs_11_stochastic"), config, 0).unwrap();
+    assert_eq!(env.num_controllers(), 11);
+    let expected: Vec<usize> = (0..11).collect();
+    for _ in 0..50 {
+        env.step(&[Action::Right; 11]).unwrap();
+        assert_eq!(env.controlled_players(), &expected[..]);
+        for (i, o) in env.observations().iter().enumerate() {
+            assert_eq!(o.active, i as i32);
+        }
+    }
+}
+
+#[test]
+fn builtin_ai_hands_the_player_to_the_ai_until_another_action() {
+    let config = EnvConfig { action_set: touchline_engine::ActionSet::V2, ..EnvConfig::default() };
+    let mut env = Env::with_config(common::scenario("academy_empty_goal_close"), config, 0).unwrap();
+    // Built-in AI scores in the empty goal.
+    let (steps, reward) = common::play(&mut env, |_, _| Action::BuiltinAi);
+    assert_eq!(reward, 1.0, "after {steps} steps");
+    assert_eq!(env.step_indices(&[19]), Err(EngineError::EpisodeOver));
+}

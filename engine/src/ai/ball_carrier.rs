@@ -69,7 +69,7 @@ pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: 
         dir.y -= pos_t.y.signum() * 0.8;
     }
     let dir = dir.normalize_or(Vec2::X);
-    let mut best_value = 0.25 + 0.35 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0) - if pressure < 2.0 { 0.25 } else { 0.0 }
+    let mut best_value = 0.2 + 0.55 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0) - if pressure < 2.0 { 0.25 } else { 0.0 }
         + rng.noise(noise);
     let speed = if space > 6.0 { me.max_speed } else { 5.0 };
     let to = frame.vec2(pos_t + dir * 8.0);
@@ -125,7 +125,8 @@ pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: 
             _ if d < 15.0 => continue,
             _ => 0.4,
         };
-        let value = 0.15 + 0.45 * progress + 0.35 * closeness + 0.3 * open - risk - if d > 35.0 { 0.15 } else { 0.0 }
+        let backwards = if progress < -0.1 { 0.1 } else { 0.0 };
+        let value = 0.15 + 0.6 * progress + 0.35 * closeness + 0.3 * open - risk - backwards - if d > 35.0 { 0.15 } else { 0.0 }
             + if pressure < 2.5 { 0.15 } else { 0.0 }
             + rng.noise(noise);
         if value > best_value + 0.05 {

@@ -17,7 +17,7 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame) -> Vec2 {
         None => view.last_touch.is_some_and(|t| view.players[t].side == p.side),
     };
     let home = p.home;
-    let mut x = if ours { 0.55 * home.x + 0.45 * ball.x + 10.0 } else { 0.6 * home.x + 0.4 * ball.x - 6.0 };
+    let mut x = if ours { 0.5 * home.x + 0.6 * ball.x + 8.0 } else { 0.6 * home.x + 0.45 * ball.x - 6.0 };
     let mut y = 0.8 * home.y + 0.25 * ball.y;
     if ours && p.role.is_attacker() && home.x > -0.25 * HALF_LENGTH {
         // Off-the-ball run: get ahead of the ball, towards the goal, into the channel.

@@ -8,6 +8,9 @@ use crate::geometry::pitch::{in_penalty_area, BALL_RADIUS};
 
 /// Horizontal reach (m) of an outfield player for a loose ball.
 const FOOT_REACH: f32 = 0.7;
+/// Reach (m) for a ball moving slower than [`SLOW_BALL`] (m/s) relative to the player.
+const STILL_BALL_REACH: f32 = 1.15;
+const SLOW_BALL: f32 = 3.0;
 /// Highest ball (m) an outfield player controls (head height).
 const FOOT_HEIGHT: f32 = 1.9;
 /// Above this height (m) control is with chest or head, and only of slower balls.
@@ -96,6 +99,9 @@ impl Match {
                 (if p.dive_ticks > 0 { DIVE_REACH } else { HAND_REACH }, HAND_HEIGHT)
             } else if p.is_sliding() {
                 (SLIDE_REACH, FOOT_HEIGHT)
+            } else if (ball.velocity.truncate() - p.velocity).length_squared() < SLOW_BALL * SLOW_BALL {
+                // A slow ball is easy to step to: GRF gives possession within about a metre.
+                (STILL_BALL_REACH, FOOT_HEIGHT)
             } else {
                 (FOOT_REACH, FOOT_HEIGHT)
             };

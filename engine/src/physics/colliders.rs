@@ -4,7 +4,7 @@
 use glam::Vec3;
 use rapier3d::geometry::{ColliderBuilder, ColliderHandle, ColliderSet};
 use rapier3d::parry::math::Pose;
-use rapier3d::parry::query::{cast_shapes, ShapeCastOptions};
+use rapier3d::parry::query::{cast_shapes, PointQuery, ShapeCastOptions, ShapeCastStatus};
 use rapier3d::parry::shape::Ball as BallShape;
 
 use crate::geometry::pitch::{BALL_RADIUS, GOAL_DEPTH, GOAL_HALF_WIDTH, GOAL_HEIGHT, HALF_LENGTH, POST_RADIUS};
@@ -155,7 +155,7 @@ impl PitchColliders {
             max_time_of_impact: dt,
             target_distance: 0.0,
             stop_at_penetration: true,
-            compute_impact_geometry_on_penetration: true,
+            compute_impact_geometry_on_penetration: false,
         };
         let hit = cast_shapes(
             &Pose::from_translation(from),
@@ -167,8 +167,17 @@ impl PitchColliders {
             options,
         )
         .ok()??;
-        // normal1 is the ball's outward normal at the contact; the push-out normal is its opposite.
-        let normal = -hit.normal1;
+        let normal = if hit.status == ShapeCastStatus::PenetratingOrWithinTargetDist {
+            // Already touching: push out along the line from the nearest surface point to the
+            // ball's centre (a closed-form projection; parry's penetration geometry allocates).
+            let projection = collider.shape().project_point(collider.position(), from, false);
+            let away = from - projection.point;
+            (if projection.is_inside { -away } else { away }).normalize_or_zero()
+        } else {
+            // normal1 is the ball's outward normal at the contact; the push-out normal is its
+            // opposite.
+            -hit.normal1
+        };
         if !normal.is_finite() || normal.length_squared() < 0.5 {
             return None;
         }

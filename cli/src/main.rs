@@ -1,1 +1,114 @@
-fn main() {}
+//! `touchline`: play touchline scenarios from the command line.
+//!
+//! ```text
+//! touchline run academy_empty_goal_close --episodes 10
+//! touchline run 11_vs_11_easy_stochastic --policy random --seed 7 --json
+//! touchline scenarios
+//! ```
+//!
+//! Exit codes: 0 on success; 1 when the engine fails or the output cannot be written; 2 for bad
+//! input (usage errors, an unknown scenario, an unreadable or invalid scenario file, an agent
+//! configuration the scenario cannot take). Errors are printed to stderr as miette diagnostics.
+
+mod cmd;
+
+use std::io;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use miette::Diagnostic;
+use thiserror::Error;
+use touchline_dsl::LoadError;
+use touchline_engine::EngineError;
+
+/// touchline: a fast football environment for reinforcement learning.
+#[derive(Debug, Parser)]
+#[command(name = "touchline", version)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Play episodes of a scenario with a simple policy and report scores, rewards and speed.
+    Run(cmd::run::RunArgs),
+    /// List the stdlib scenarios.
+    Scenarios(cmd::scenarios::ScenariosArgs),
+}
+
+/// Everything a command can fail with.
+#[derive(Debug, Error, Diagnostic)]
+pub(crate) enum CliError {
+    /// The scenario could not be loaded (the dsl's diagnostics, `tl::E001` …).
+    #[error(transparent)]
+    #[diagnostic(transparent)]
+    Load(#[from] LoadError),
+
+    /// The scenario loaded, but the environment cannot be built with the requested agents.
+    #[error("cannot play `{scenario}` with this configuration")]
+    #[diagnostic(code(tl::cli::config))]
+    Config {
+        /// The scenario as given on the command line.
+        scenario: String,
+        /// What to change.
+        #[help]
+        help: String,
+        /// The engine's reason.
+        #[source]
+        source: EngineError,
+    },
+
+    /// The engine refused a step it should have accepted: a bug.
+    #[error("the engine failed in episode {episode} after {steps} steps")]
+    #[diagnostic(
+        code(tl::cli::engine),
+        help("this is a bug in touchline; please report it with the command line that caused it")
+    )]
+    Engine {
+        /// 0-based episode index.
+        episode: u64,
+        /// Steps played in that episode before the failure.
+        steps: u32,
+        /// The engine's error.
+        #[source]
+        source: EngineError,
+    },
+
+    /// Writing to stdout failed.
+    #[error("cannot write the output")]
+    #[diagnostic(code(tl::cli::output))]
+    Output(#[from] io::Error),
+}
+
+impl CliError {
+    /// 2 for bad input, 1 for failures while running.
+    fn exit_code(&self) -> u8 {
+        match self {
+            CliError::Load(_) | CliError::Config { .. } => 2,
+            CliError::Engine { .. } | CliError::Output(_) => 1,
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    // Usage errors print clap's message and exit with status 2; `--help` and `--version` exit 0.
+    let cli = Cli::parse();
+    // The fancy graphical handler: colour and unicode when stderr is a terminal that supports them.
+    let _ = miette::set_hook(Box::new(|_| Box::new(miette::MietteHandlerOpts::new().build())));
+
+    let result = match cli.command {
+        Command::Run(args) => cmd::run::run(&args),
+        Command::Scenarios(args) => cmd::scenarios::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        // A closed pipe (`touchline scenarios | head`) is not an error worth reporting.
+        Err(CliError::Output(e)) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(err) => {
+            let code = err.exit_code();
+            eprintln!("{:?}", miette::Report::new(err));
+            ExitCode::from(code)
+        }
+    }
+}

@@ -43,9 +43,7 @@ pub enum LoadError {
     #[error("`{origin}` is not a playable scenario")]
     #[diagnostic(
         code(tl::E004),
-        help(
-            "each team needs 1 to 11 players with exactly one GK, all positions inside the pitch"
-        )
+        help("each team needs 1 to 11 players with exactly one GK, all positions inside the pitch")
     )]
     Invalid {
         /// Where the scenario came from: a path or a stdlib name.
@@ -127,16 +125,9 @@ impl LoadError {
         };
         // The headline carries the whole message; the label only its first clause, since labels
         // are not wrapped ("unknown field `x`, expected one of …" -> "unknown field `x`").
-        let short = message
-            .split(", expected")
-            .next()
-            .unwrap_or(&message)
-            .to_owned();
+        let short = message.split(", expected").next().unwrap_or(&message).to_owned();
         let (label, help) = match category {
-            Category::Eof => (
-                "the text ends here".to_owned(),
-                Some("a closing `}` or `]` may be missing".to_owned()),
-            ),
+            Category::Eof => ("the text ends here".to_owned(), Some("a closing `}` or `]` may be missing".to_owned())),
             Category::Data => (
                 short,
                 Some(
@@ -224,9 +215,8 @@ fn token_span(text: &str, end: usize) -> SourceSpan {
 /// messages of Python exceptions.
 pub fn render_plain(err: &dyn Diagnostic) -> String {
     let mut out = String::new();
-    let handler = GraphicalReportHandler::new_themed(GraphicalTheme::unicode_nocolor())
-        .with_width(80)
-        .with_links(false);
+    let handler =
+        GraphicalReportHandler::new_themed(GraphicalTheme::unicode_nocolor()).with_width(80).with_links(false);
     if handler.render_report(&mut out, err).is_err() {
         // Rendering only fails if a source span cannot be read; fall back to the message.
         out = err.to_string();
@@ -248,11 +238,7 @@ mod tests {
         assert_eq!(byte_offset(text, 2, 1), 3);
         assert_eq!(byte_offset(text, 2, 0), 3);
         assert_eq!(byte_offset(text, 2, 3), 5, "start of é");
-        assert_eq!(
-            byte_offset(text, 2, 4),
-            5,
-            "inside é: moved back to its start"
-        );
+        assert_eq!(byte_offset(text, 2, 4), 5, "inside é: moved back to its start");
         assert_eq!(byte_offset(text, 2, 5), 7, "the line's newline");
         assert_eq!(byte_offset(text, 2, 9), 7, "clamped to the end of the line");
         assert_eq!(byte_offset(text, 3, 1), 8);
@@ -277,13 +263,8 @@ mod tests {
 
     #[test]
     fn codes() {
-        let err = LoadError::ScenarioLanguageUnavailable {
-            path: "x.tl".into(),
-        };
+        let err = LoadError::ScenarioLanguageUnavailable { path: "x.tl".into() };
         assert_eq!(err.code_str(), "tl::E005");
-        assert_eq!(
-            err.code().map(|c| c.to_string()).as_deref(),
-            Some("tl::E005")
-        );
+        assert_eq!(err.code().map(|c| c.to_string()).as_deref(), Some("tl::E005"));
     }
 }

@@ -28,9 +28,7 @@ pub fn load(spec: &str) -> Result<Scenario, LoadError> {
     match path.extension().and_then(|e| e.to_str()) {
         Some(ext) if ext.eq_ignore_ascii_case("json") => load_file(path),
         Some(ext) if ext.eq_ignore_ascii_case("tl") => {
-            Err(LoadError::ScenarioLanguageUnavailable {
-                path: spec.to_owned(),
-            })
+            Err(LoadError::ScenarioLanguageUnavailable { path: spec.to_owned() })
         }
         _ => Err(unknown(spec)),
     }
@@ -43,10 +41,8 @@ pub fn load(spec: &str) -> Result<Scenario, LoadError> {
 /// `tl::E002` if the file cannot be read (or is not UTF-8); otherwise as [`load_json`].
 pub fn load_file(path: &Path) -> Result<Scenario, LoadError> {
     let origin = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|source| LoadError::Unreadable {
-        path: origin.clone(),
-        source,
-    })?;
+    let text =
+        std::fs::read_to_string(path).map_err(|source| LoadError::Unreadable { path: origin.clone(), source })?;
     load_json(&text, &origin)
 }
 
@@ -57,12 +53,8 @@ pub fn load_file(path: &Path) -> Result<Scenario, LoadError> {
 /// - `tl::E003` [`LoadError::Json`]: bad JSON or the wrong shape, pointing at the line and column;
 /// - `tl::E004` [`LoadError::Invalid`]: the scenario fails [`Scenario::validate`].
 pub fn load_json(text: &str, origin: &str) -> Result<Scenario, LoadError> {
-    let scenario: Scenario =
-        serde_json::from_str(text).map_err(|e| LoadError::from_json(&e, text, origin))?;
-    scenario.validate().map_err(|source| LoadError::Invalid {
-        origin: origin.to_owned(),
-        source,
-    })?;
+    let scenario: Scenario = serde_json::from_str(text).map_err(|e| LoadError::from_json(&e, text, origin))?;
+    scenario.validate().map_err(|source| LoadError::Invalid { origin: origin.to_owned(), source })?;
     Ok(scenario)
 }
 
@@ -78,8 +70,5 @@ fn unknown(spec: &str) -> LoadError {
         [one] => format!("did you mean {one}?"),
         many => format!("did you mean one of {}?", many.join(", ")),
     };
-    LoadError::UnknownScenario {
-        name: spec.to_owned(),
-        help,
-    }
+    LoadError::UnknownScenario { name: spec.to_owned(), help }
 }

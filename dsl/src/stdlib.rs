@@ -8,55 +8,19 @@ use touchline_engine::Scenario;
 
 /// `(name, compiled JSON)` for every stdlib scenario, sorted by name.
 const SCENARIOS: &[(&str, &str)] = &[
-    (
-        "11_vs_11_competition",
-        include_str!("../../stdlib-scenarios/11_vs_11_competition.json"),
-    ),
-    (
-        "11_vs_11_easy_stochastic",
-        include_str!("../../stdlib-scenarios/11_vs_11_easy_stochastic.json"),
-    ),
-    (
-        "11_vs_11_hard_stochastic",
-        include_str!("../../stdlib-scenarios/11_vs_11_hard_stochastic.json"),
-    ),
-    (
-        "11_vs_11_kaggle",
-        include_str!("../../stdlib-scenarios/11_vs_11_kaggle.json"),
-    ),
-    (
-        "11_vs_11_stochastic",
-        include_str!("../../stdlib-scenarios/11_vs_11_stochastic.json"),
-    ),
-    (
-        "1_vs_1_easy",
-        include_str!("../../stdlib-scenarios/1_vs_1_easy.json"),
-    ),
+    ("11_vs_11_competition", include_str!("../../stdlib-scenarios/11_vs_11_competition.json")),
+    ("11_vs_11_easy_stochastic", include_str!("../../stdlib-scenarios/11_vs_11_easy_stochastic.json")),
+    ("11_vs_11_hard_stochastic", include_str!("../../stdlib-scenarios/11_vs_11_hard_stochastic.json")),
+    ("11_vs_11_kaggle", include_str!("../../stdlib-scenarios/11_vs_11_kaggle.json")),
+    ("11_vs_11_stochastic", include_str!("../../stdlib-scenarios/11_vs_11_stochastic.json")),
+    ("1_vs_1_easy", include_str!("../../stdlib-scenarios/1_vs_1_easy.json")),
     ("5_vs_5", include_str!("../../stdlib-scenarios/5_vs_5.json")),
-    (
-        "academy_3_vs_1_with_keeper",
-        include_str!("../../stdlib-scenarios/academy_3_vs_1_with_keeper.json"),
-    ),
-    (
-        "academy_corner",
-        include_str!("../../stdlib-scenarios/academy_corner.json"),
-    ),
-    (
-        "academy_counterattack_easy",
-        include_str!("../../stdlib-scenarios/academy_counterattack_easy.json"),
-    ),
-    (
-        "academy_counterattack_hard",
-        include_str!("../../stdlib-scenarios/academy_counterattack_hard.json"),
-    ),
-    (
-        "academy_empty_goal",
-        include_str!("../../stdlib-scenarios/academy_empty_goal.json"),
-    ),
-    (
-        "academy_empty_goal_close",
-        include_str!("../../stdlib-scenarios/academy_empty_goal_close.json"),
-    ),
+    ("academy_3_vs_1_with_keeper", include_str!("../../stdlib-scenarios/academy_3_vs_1_with_keeper.json")),
+    ("academy_corner", include_str!("../../stdlib-scenarios/academy_corner.json")),
+    ("academy_counterattack_easy", include_str!("../../stdlib-scenarios/academy_counterattack_easy.json")),
+    ("academy_counterattack_hard", include_str!("../../stdlib-scenarios/academy_counterattack_hard.json")),
+    ("academy_empty_goal", include_str!("../../stdlib-scenarios/academy_empty_goal.json")),
+    ("academy_empty_goal_close", include_str!("../../stdlib-scenarios/academy_empty_goal_close.json")),
     (
         "academy_pass_and_shoot_with_keeper",
         include_str!("../../stdlib-scenarios/academy_pass_and_shoot_with_keeper.json"),
@@ -65,22 +29,10 @@ const SCENARIOS: &[(&str, &str)] = &[
         "academy_run_pass_and_shoot_with_keeper",
         include_str!("../../stdlib-scenarios/academy_run_pass_and_shoot_with_keeper.json"),
     ),
-    (
-        "academy_run_to_score",
-        include_str!("../../stdlib-scenarios/academy_run_to_score.json"),
-    ),
-    (
-        "academy_run_to_score_with_keeper",
-        include_str!("../../stdlib-scenarios/academy_run_to_score_with_keeper.json"),
-    ),
-    (
-        "academy_single_goal_versus_lazy",
-        include_str!("../../stdlib-scenarios/academy_single_goal_versus_lazy.json"),
-    ),
-    (
-        "test_example_multiagent",
-        include_str!("../../stdlib-scenarios/test_example_multiagent.json"),
-    ),
+    ("academy_run_to_score", include_str!("../../stdlib-scenarios/academy_run_to_score.json")),
+    ("academy_run_to_score_with_keeper", include_str!("../../stdlib-scenarios/academy_run_to_score_with_keeper.json")),
+    ("academy_single_goal_versus_lazy", include_str!("../../stdlib-scenarios/academy_single_goal_versus_lazy.json")),
+    ("test_example_multiagent", include_str!("../../stdlib-scenarios/test_example_multiagent.json")),
 ];
 
 /// Names of all stdlib scenarios, sorted (byte order), e.g. `"academy_empty_goal_close"`.
@@ -113,10 +65,7 @@ pub fn names() -> &'static [&'static str] {
 
 /// The compiled JSON text of the stdlib scenario `name`, or `None` if there is no such scenario.
 pub fn source(name: &str) -> Option<&'static str> {
-    SCENARIOS
-        .binary_search_by(|(n, _)| (*n).cmp(name))
-        .ok()
-        .map(|i| SCENARIOS[i].1)
+    SCENARIOS.binary_search_by(|(n, _)| (*n).cmp(name)).ok().map(|i| SCENARIOS[i].1)
 }
 
 /// The stdlib scenario `name`, parsed; `None` if there is no such scenario.

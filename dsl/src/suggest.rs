@@ -27,25 +27,15 @@ pub(crate) fn levenshtein(a: &str, b: &str) -> usize {
 pub(crate) fn closest<'a>(query: &str, candidates: &[&'a str]) -> Vec<&'a str> {
     let query = query.to_ascii_lowercase();
     let limit = (query.chars().count() / 3).max(1);
-    let scored: Vec<(usize, &'a str)> = candidates
-        .iter()
-        .map(|c| (levenshtein(&query, &c.to_ascii_lowercase()), *c))
-        .collect();
+    let scored: Vec<(usize, &'a str)> =
+        candidates.iter().map(|c| (levenshtein(&query, &c.to_ascii_lowercase()), *c)).collect();
     if let Some(best) = scored.iter().map(|(d, _)| *d).min().filter(|d| *d <= limit) {
-        return scored
-            .into_iter()
-            .filter(|(d, _)| *d == best)
-            .map(|(_, c)| c)
-            .collect();
+        return scored.into_iter().filter(|(d, _)| *d == best).map(|(_, c)| c).collect();
     }
     if query.is_empty() {
         return Vec::new();
     }
-    candidates
-        .iter()
-        .copied()
-        .filter(|c| c.to_ascii_lowercase().contains(&query))
-        .collect()
+    candidates.iter().copied().filter(|c| c.to_ascii_lowercase().contains(&query)).collect()
 }
 
 #[cfg(test)]
@@ -87,10 +77,7 @@ mod tests {
     #[test]
     fn suggests_the_nearest_name() {
         assert_eq!(closest("academy_empty_gaol", NAMES), ["academy_empty_goal"]);
-        assert_eq!(
-            closest("academy_empty_goal_clos", NAMES),
-            ["academy_empty_goal_close"]
-        );
+        assert_eq!(closest("academy_empty_goal_clos", NAMES), ["academy_empty_goal_close"]);
         assert_eq!(closest("ACADEMY_CORNER", NAMES), ["academy_corner"]);
         assert_eq!(closest("5_vs_6", NAMES), ["5_vs_5"]);
     }
@@ -103,10 +90,7 @@ mod tests {
     #[test]
     fn falls_back_to_substrings() {
         assert_eq!(closest("corner", NAMES), ["academy_corner"]);
-        assert_eq!(
-            closest("run_to_score", NAMES),
-            ["academy_run_to_score", "academy_run_to_score_with_keeper"]
-        );
+        assert_eq!(closest("run_to_score", NAMES), ["academy_run_to_score", "academy_run_to_score_with_keeper"]);
     }
 
     #[test]

@@ -14,8 +14,7 @@ struct TempFile(PathBuf);
 
 impl TempFile {
     fn new(name: &str, contents: &str) -> TempFile {
-        let path =
-            std::env::temp_dir().join(format!("touchline-dsl-test-{}-{name}", std::process::id()));
+        let path = std::env::temp_dir().join(format!("touchline-dsl-test-{}-{name}", std::process::id()));
         std::fs::write(&path, contents).unwrap();
         TempFile(path)
     }
@@ -48,10 +47,7 @@ fn json_file_loads() {
     let text = touchline_dsl::stdlib::source("academy_corner").unwrap();
     let file = TempFile::new("corner.json", text);
     let s = load(file.spec()).unwrap();
-    assert_eq!(
-        s,
-        touchline_dsl::stdlib::scenario("academy_corner").unwrap()
-    );
+    assert_eq!(s, touchline_dsl::stdlib::scenario("academy_corner").unwrap());
     assert_eq!(load_file(&file.0).unwrap(), s);
 }
 
@@ -63,10 +59,7 @@ fn sparse_json_takes_grf_defaults() {
     )
     .unwrap();
     assert_eq!(s.game_duration, 3000);
-    assert_eq!(
-        (s.left_team_difficulty, s.right_team_difficulty),
-        (1.0, 0.6)
-    );
+    assert_eq!((s.left_team_difficulty, s.right_team_difficulty), (1.0, 0.6));
     assert!(s.left_team[0].controllable && !s.left_team[0].lazy);
 }
 
@@ -74,9 +67,7 @@ fn sparse_json_takes_grf_defaults() {
 fn missing_file_is_e002() {
     let err = load("no/such/dir/scenario.json").unwrap_err();
     assert_eq!(code(&err), "tl::E002");
-    assert!(
-        matches!(&err, LoadError::Unreadable { source, .. } if source.kind() == std::io::ErrorKind::NotFound)
-    );
+    assert!(matches!(&err, LoadError::Unreadable { source, .. } if source.kind() == std::io::ErrorKind::NotFound));
     insta::assert_snapshot!(render_plain(&err));
 }
 
@@ -85,9 +76,7 @@ fn bad_json_is_e003_with_a_label() {
     let text = "{\n  \"name\": \"broken\",\n  \"game_duration\": 400\n  \"offsides\": false\n}\n";
     let err = load_json(text, "broken.json").unwrap_err();
     assert_eq!(code(&err), "tl::E003");
-    let LoadError::Json(details) = &err else {
-        panic!("{err:?}")
-    };
+    let LoadError::Json(details) = &err else { panic!("{err:?}") };
     assert_eq!((details.line, details.column), (4, 3));
     let span = details.span;
     assert_eq!(&text[span.offset()..span.offset() + span.len()], "\"");
@@ -129,10 +118,7 @@ fn truncated_json_is_e003_at_the_end() {
 fn unknown_name_is_e001_with_a_suggestion() {
     let err = load("academy_empty_gaol").unwrap_err();
     assert_eq!(code(&err), "tl::E001");
-    assert_eq!(
-        err.help().unwrap().to_string(),
-        "did you mean `academy_empty_goal`?"
-    );
+    assert_eq!(err.help().unwrap().to_string(), "did you mean `academy_empty_goal`?");
     insta::assert_snapshot!(render_plain(&err));
 }
 
@@ -144,9 +130,7 @@ fn unknown_name_suggestions() {
         help("counterattack"),
         "did you mean one of `academy_counterattack_easy`, `academy_counterattack_hard`?"
     );
-    assert!(
-        help("penalty_shootout").starts_with("the stdlib scenarios are: 11_vs_11_competition, ")
-    );
+    assert!(help("penalty_shootout").starts_with("the stdlib scenarios are: 11_vs_11_competition, "));
     assert_eq!(code(&load("no_extension_file").unwrap_err()), "tl::E001");
 }
 
@@ -183,10 +167,7 @@ fn codes_are_stable() {
         load("x.tl").unwrap_err(),
     ];
     let codes: Vec<String> = errors.iter().map(code).collect();
-    assert_eq!(
-        codes,
-        ["tl::E001", "tl::E002", "tl::E003", "tl::E004", "tl::E005"]
-    );
+    assert_eq!(codes, ["tl::E001", "tl::E002", "tl::E003", "tl::E004", "tl::E005"]);
     for err in &errors {
         assert_eq!(err.code_str(), code(err));
     }

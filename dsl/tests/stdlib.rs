@@ -19,43 +19,11 @@ const SUMMARY: &[(&str, usize, usize, u32, f32, f32, bool)] = &[
     ("academy_counterattack_hard", 11, 11, 400, 1.0, 0.6, false),
     ("academy_empty_goal", 2, 1, 400, 1.0, 0.6, false),
     ("academy_empty_goal_close", 2, 1, 400, 1.0, 0.6, false),
-    (
-        "academy_pass_and_shoot_with_keeper",
-        3,
-        2,
-        400,
-        1.0,
-        0.6,
-        false,
-    ),
-    (
-        "academy_run_pass_and_shoot_with_keeper",
-        3,
-        2,
-        400,
-        1.0,
-        0.6,
-        false,
-    ),
+    ("academy_pass_and_shoot_with_keeper", 3, 2, 400, 1.0, 0.6, false),
+    ("academy_run_pass_and_shoot_with_keeper", 3, 2, 400, 1.0, 0.6, false),
     ("academy_run_to_score", 2, 6, 400, 1.0, 0.6, false),
-    (
-        "academy_run_to_score_with_keeper",
-        2,
-        6,
-        400,
-        1.0,
-        0.6,
-        false,
-    ),
-    (
-        "academy_single_goal_versus_lazy",
-        11,
-        11,
-        3000,
-        1.0,
-        0.6,
-        false,
-    ),
+    ("academy_run_to_score_with_keeper", 2, 6, 400, 1.0, 0.6, false),
+    ("academy_single_goal_versus_lazy", 11, 11, 3000, 1.0, 0.6, false),
     ("test_example_multiagent", 4, 2, 100, 1.0, 0.6, false),
 ];
 
@@ -90,36 +58,18 @@ fn every_name_loads_validates_and_matches_the_summary_table() {
         assert_eq!(stdlib::scenario(name).as_ref(), Some(&s), "{name}");
         assert_eq!(s.name, name);
         assert!(!s.description.is_empty(), "{name}");
-        assert_eq!(
-            (s.left_team.len(), s.right_team.len()),
-            (left, right),
-            "{name}"
-        );
+        assert_eq!((s.left_team.len(), s.right_team.len()), (left, right), "{name}");
         assert_eq!(s.game_duration, duration, "{name}");
         assert_eq!(s.left_team_difficulty, left_diff, "{name}");
         assert_eq!(s.right_team_difficulty, right_diff, "{name}");
         assert_eq!(s.swap_teams_on_odd_episodes, swap, "{name}");
-        assert!(
-            !s.deterministic,
-            "{name}: no top-level scenario is deterministic"
-        );
+        assert!(!s.deterministic, "{name}: no top-level scenario is deterministic");
         assert!(!s.control_all_players, "{name}");
-        assert_eq!(
-            s.second_half,
-            if name == "11_vs_11_kaggle" {
-                1500
-            } else {
-                999_999_999
-            }
-        );
+        assert_eq!(s.second_half, if name == "11_vs_11_kaggle" { 1500 } else { 999_999_999 });
         for (side, team) in [("left", &s.left_team), ("right", &s.right_team)] {
             let keepers = team.iter().filter(|p| p.role == Role::GK).count();
             assert_eq!(keepers, 1, "{name}: {side} keeper");
-            assert_eq!(
-                team[0].role,
-                Role::GK,
-                "{name}: the {side} keeper is player 0"
-            );
+            assert_eq!(team[0].role, Role::GK, "{name}: the {side} keeper is player 0");
         }
     }
 }
@@ -133,11 +83,7 @@ fn config_flags_match_the_summary_table() {
         assert_eq!(s.end_episode_on_score, academy, "{name}");
         assert_eq!(s.end_episode_on_out_of_play, academy, "{name}");
         // academy_corner keeps going when the defenders win the ball.
-        assert_eq!(
-            s.end_episode_on_possession_change,
-            academy && name != "academy_corner",
-            "{name}"
-        );
+        assert_eq!(s.end_episode_on_possession_change, academy && name != "academy_corner", "{name}");
     }
 }
 
@@ -182,10 +128,7 @@ fn p(role: Role, x: f32, y: f32) -> PlayerEntry {
 #[test]
 fn academy_empty_goal_close_players() {
     let s = get("academy_empty_goal_close");
-    assert_eq!(
-        s.left_team,
-        [p(Role::GK, -1.0, 0.0), p(Role::CB, 0.75, 0.0)]
-    );
+    assert_eq!(s.left_team, [p(Role::GK, -1.0, 0.0), p(Role::CB, 0.75, 0.0)]);
     // The right keeper is placed at x = +1 in its own frame: the left goal, leaving the right goal empty.
     assert_eq!(s.right_team, [p(Role::GK, 1.0, 0.0)]);
 }
@@ -234,41 +177,20 @@ fn single_goal_versus_lazy_opponents_are_lazy_but_their_keeper() {
 #[test]
 fn eleven_a_side_set_a_kicks_off() {
     // Set A (left in even 0-based episodes) has two players either side of the centre spot.
-    for name in [
-        "11_vs_11_competition",
-        "11_vs_11_easy_stochastic",
-        "11_vs_11_hard_stochastic",
-        "11_vs_11_stochastic",
-    ] {
+    for name in ["11_vs_11_competition", "11_vs_11_easy_stochastic", "11_vs_11_hard_stochastic", "11_vs_11_stochastic"]
+    {
         let s = get(name);
-        assert_eq!(
-            &s.left_team[1..3],
-            [p(Role::RM, 0.0, 0.02), p(Role::CF, 0.0, -0.02)],
-            "{name}"
-        );
-        assert_eq!(
-            &s.right_team[1..3],
-            [p(Role::RM, -0.05, 0.0), p(Role::CF, -0.01, 0.216102)],
-            "{name}"
-        );
+        assert_eq!(&s.left_team[1..3], [p(Role::RM, 0.0, 0.02), p(Role::CF, 0.0, -0.02)], "{name}");
+        assert_eq!(&s.right_team[1..3], [p(Role::RM, -0.05, 0.0), p(Role::CF, -0.01, 0.216102)], "{name}");
         let (left, right) = s.teams_for_episode(1);
-        assert_eq!(
-            (left, right),
-            (s.right_team.as_slice(), s.left_team.as_slice())
-        );
+        assert_eq!((left, right), (s.right_team.as_slice(), s.left_team.as_slice()));
     }
     let kaggle = get("11_vs_11_kaggle");
     let roles: Vec<Role> = kaggle.left_team.iter().map(|p| p.role).collect();
     use Role::*;
     assert_eq!(roles, [GK, LB, CB, CB, RB, CM, CM, CM, LM, CF, RM]);
-    assert_eq!(
-        &kaggle.left_team[9..],
-        [p(CF, 0.0, 0.02), p(RM, 0.0, -0.02)]
-    );
-    assert_eq!(
-        &kaggle.right_team[9..],
-        [p(CF, -0.05, 0.0), p(RM, -0.01, 0.216102)]
-    );
+    assert_eq!(&kaggle.left_team[9..], [p(CF, 0.0, 0.02), p(RM, 0.0, -0.02)]);
+    assert_eq!(&kaggle.right_team[9..], [p(CF, -0.05, 0.0), p(RM, -0.01, 0.216102)]);
 }
 
 #[test]
@@ -278,9 +200,7 @@ fn counterattacks_differ_in_one_defender() {
     assert_eq!(easy.left_team, hard.left_team);
     assert_eq!(easy.right_team[2], p(Role::CB, 0.4, -0.06356));
     assert_eq!(hard.right_team[2], p(Role::CB, -0.4, -0.06356));
-    let differing: Vec<usize> = (0..11)
-        .filter(|&i| easy.right_team[i] != hard.right_team[i])
-        .collect();
+    let differing: Vec<usize> = (0..11).filter(|&i| easy.right_team[i] != hard.right_team[i]).collect();
     assert_eq!(differing, [2]);
 }
 

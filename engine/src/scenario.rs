@@ -142,8 +142,7 @@ impl Scenario {
                 return bad(format!("{side} team has {keepers} goalkeepers; exactly one is required"));
             }
             for (i, p) in team.iter().enumerate() {
-                if !(p.x.is_finite() && p.y.is_finite() && p.x.abs() <= MAX_ABS_X && p.y.abs() <= MAX_ABS_Y)
-                {
+                if !(p.x.is_finite() && p.y.is_finite() && p.x.abs() <= MAX_ABS_X && p.y.abs() <= MAX_ABS_Y) {
                     return bad(format!("{side} player {i} ({}) at ({}, {}) is off the pitch", p.role, p.x, p.y));
                 }
             }

@@ -25,7 +25,8 @@ fn every_stdlib_scenario_plays_out_with_random_and_builtin_agents() {
             let config = EnvConfig { action_set: ActionSet::V2, ..EnvConfig::default() };
             let mut env = Env::with_config(scenario.clone(), config, policy_seed).unwrap();
             let mut policy = common::RandomPolicy::new(policy_seed);
-            let (steps, _) = common::play(&mut env, |_, e| if builtin { Action::BuiltinAi } else { policy.action(e.action_set()) });
+            let (steps, _) =
+                common::play(&mut env, |_, e| if builtin { Action::BuiltinAi } else { policy.action(e.action_set()) });
             assert!(steps <= duration + 1, "{name}: {steps} steps");
             for p in env.game().players() {
                 assert!(p.position.is_finite(), "{name}: {p:?}");

@@ -48,7 +48,9 @@ static GLOBAL: Counting = Counting;
 
 #[test]
 fn step_does_not_allocate() {
-    for (name, builtin) in [("11_vs_11_easy_stochastic", true), ("academy_empty_goal_close", false), ("academy_corner", false)] {
+    for (name, builtin) in
+        [("11_vs_11_easy_stochastic", true), ("academy_empty_goal_close", false), ("academy_corner", false)]
+    {
         let mut env = if builtin { common::builtin_env(name, 1) } else { common::env(name, 1) };
         let mut policy = common::RandomPolicy::new(3);
         let mut actions = [Action::Idle; 1];

@@ -41,7 +41,10 @@ fn bad_actions_are_errors_not_panics() {
     assert!(matches!(env.step_indices(&[19]), Err(EngineError::UnknownAction { index: 19, .. })));
     assert!(env.step_indices(&[5]).is_ok());
     let config = EnvConfig { left_agents: 3, ..EnvConfig::default() };
-    assert!(matches!(Env::with_config(common::scenario("academy_empty_goal"), config, 0), Err(EngineError::InvalidConfig { .. })));
+    assert!(matches!(
+        Env::with_config(common::scenario("academy_empty_goal"), config, 0),
+        Err(EngineError::InvalidConfig { .. })
+    ));
 }
 
 #[test]

@@ -28,7 +28,10 @@ fn a_hundred_easy_matches_play_out_sanely() {
             }
             let b = game.ball();
             assert!(b.position.is_finite() && b.velocity.is_finite(), "seed {seed} step {steps}: {b:?}");
-            assert!(b.position.x.abs() <= LIMIT_X && b.position.y.abs() <= LIMIT_Y && b.position.z < 60.0, "seed {seed}: {b:?}");
+            assert!(
+                b.position.x.abs() <= LIMIT_X && b.position.y.abs() <= LIMIT_Y && b.position.z < 60.0,
+                "seed {seed}: {b:?}"
+            );
             if out.terminated || out.truncated {
                 assert!(out.truncated && !out.terminated, "seed {seed}: a full match only ends at the time limit");
                 break;

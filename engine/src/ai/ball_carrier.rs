@@ -42,7 +42,13 @@ fn shot_value(from: Vec2, opponents: &[Player], frame: crate::geometry::TeamFram
 }
 
 /// The plan for the ball carrier `g`.
-pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, rng: &mut MatchRng) -> Plan {
+pub(crate) fn plan(
+    view: &MatchView,
+    g: usize,
+    analysis: &Analysis,
+    difficulty: &Difficulty,
+    rng: &mut MatchRng,
+) -> Plan {
     let me = &view.players[g];
     let frame = analysis.frame;
     let side = me.side;
@@ -69,7 +75,8 @@ pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: 
         dir.y -= pos_t.y.signum() * 0.8;
     }
     let dir = dir.normalize_or(Vec2::X);
-    let mut best_value = 0.2 + 0.55 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0) - if pressure < 2.0 { 0.25 } else { 0.0 }
+    let mut best_value = 0.2 + 0.55 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0)
+        - if pressure < 2.0 { 0.25 } else { 0.0 }
         + rng.noise(noise);
     let speed = if space > 6.0 { me.max_speed } else { 5.0 };
     let to = frame.vec2(pos_t + dir * 8.0);
@@ -81,7 +88,11 @@ pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: 
 
     // Shot.
     let base = shot_value(pos_t, opponents, frame);
-    let shot = if base > 0.0 { base * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 } + rng.noise(noise) } else { f32::NEG_INFINITY };
+    let shot = if base > 0.0 {
+        base * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 } + rng.noise(noise)
+    } else {
+        f32::NEG_INFINITY
+    };
     let keeper_y = opponents.iter().find(|o| o.is_keeper() && o.active).map(|k| k.position.y);
     let mut target = shot_target(side.attack_sign(), keeper_y, me.position.y);
     target.y += rng.noise(difficulty.aim_error);
@@ -126,7 +137,10 @@ pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: 
             _ => 0.4,
         };
         let backwards = if progress < -0.1 { 0.1 } else { 0.0 };
-        let value = 0.15 + 0.6 * progress + 0.35 * closeness + 0.3 * open - risk - backwards - if d > 35.0 { 0.15 } else { 0.0 }
+        let value = 0.15 + 0.6 * progress + 0.35 * closeness + 0.3 * open
+            - risk
+            - backwards
+            - if d > 35.0 { 0.15 } else { 0.0 }
             + if pressure < 2.5 { 0.15 } else { 0.0 }
             + rng.noise(noise);
         if value > best_value + 0.05 {

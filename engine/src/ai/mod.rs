@@ -118,7 +118,13 @@ pub struct TeamAi {
 impl TeamAi {
     /// The AI of `side` at difficulty `theta` for `players` players.
     pub fn new(side: Side, theta: f32, players: usize) -> TeamAi {
-        TeamAi { side, difficulty: Difficulty::new(theta), plans: vec![Plan::default(); players], next_think: 0, keeper_since: None }
+        TeamAi {
+            side,
+            difficulty: Difficulty::new(theta),
+            plans: vec![Plan::default(); players],
+            next_think: 0,
+            keeper_since: None,
+        }
     }
 
     /// The difficulty in force.
@@ -128,7 +134,13 @@ impl TeamAi {
 
     /// Re-plans when the reaction time has passed, then writes this tick's inputs for the team's
     /// players that no agent drives. `inputs` and `agent_driven` are the team's slices.
-    pub(crate) fn drive(&mut self, view: &MatchView, rng: &mut MatchRng, inputs: &mut [PlayerInput], agent_driven: &[bool]) {
+    pub(crate) fn drive(
+        &mut self,
+        view: &MatchView,
+        rng: &mut MatchRng,
+        inputs: &mut [PlayerInput],
+        agent_driven: &[bool],
+    ) {
         let first = view.ranges[self.side.index()].start;
         // An event that needs an instant reaction: the ball changed hands or a set piece began.
         if view.tick >= self.next_think {

@@ -5,7 +5,7 @@ use glam::{Vec2, Vec3};
 use super::{Analysis, Difficulty, MatchView};
 use crate::geometry::pitch::{BALL_RADIUS, GRAVITY};
 use crate::geometry::{Side, TeamFrame};
-use crate::physics::{Ball, BALL_DRAG, BOUNCE_RESTITUTION, ROLL_DECELERATION, ROLL_VISCOUS};
+use crate::physics::{BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_VISCOUS};
 
 /// Number of predicted samples.
 pub const SAMPLES: usize = 20;

@@ -3,14 +3,20 @@
 
 use glam::Vec2;
 
-use super::{goalkeeper, team_shape, Analysis, Difficulty, MatchView, Plan};
+use super::{Analysis, Difficulty, MatchView, Plan, goalkeeper, team_shape};
 use crate::game::{GameMode, Kick, KickKind, KickTarget};
 use crate::geometry::pitch::HALF_LENGTH;
 use crate::player::WALK_SPEED;
 use crate::rng::MatchRng;
 
 /// Plan for player `g` while a set piece is pending.
-pub(crate) fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, rng: &mut MatchRng) -> Plan {
+pub(crate) fn plan(
+    view: &MatchView,
+    g: usize,
+    analysis: &Analysis,
+    difficulty: &Difficulty,
+    rng: &mut MatchRng,
+) -> Plan {
     let me = &view.players[g];
     let ball = view.ball.xy();
     if view.taker == Some(g) {
@@ -56,7 +62,11 @@ fn take(view: &MatchView, g: usize, analysis: &Analysis, rng: &mut MatchRng) -> 
                 .iter()
                 .filter(|m| m.active && m.index != me.index && !m.is_keeper())
                 .map(|m| {
-                    let free = opponents.iter().filter(|o| o.active).map(|o| o.position.distance(m.position)).fold(f32::INFINITY, f32::min);
+                    let free = opponents
+                        .iter()
+                        .filter(|o| o.active)
+                        .map(|o| o.position.distance(m.position))
+                        .fold(f32::INFINITY, f32::min);
                     let d = m.position.distance(me.position);
                     (m.position, free.min(10.0) - 0.15 * d)
                 })

@@ -3,8 +3,8 @@
 use glam::Vec2;
 
 use super::MatchView;
-use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 use crate::geometry::TeamFrame;
+use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 
 /// Where player `g` should stand now (m, global frame): his home position, compressed towards the
 /// ball, pushed up when his team has the ball and dropped back when it defends. Forwards in

@@ -16,9 +16,17 @@ pub(crate) struct EndTracker {
 impl EndTracker {
     /// Whether the scenario's conditions end the episode after a step that left `score`, `mode`
     /// and ball owner team `owner` (None when nobody has the ball at his feet).
-    pub(crate) fn terminated(&mut self, scenario: &Scenario, score: [u32; 2], mode: GameMode, owner: Option<Side>) -> bool {
+    pub(crate) fn terminated(
+        &mut self,
+        scenario: &Scenario,
+        score: [u32; 2],
+        mode: GameMode,
+        owner: Option<Side>,
+    ) -> bool {
         let scored = scenario.end_episode_on_score && (score[0] > 0 || score[1] > 0);
-        let out = scenario.end_episode_on_out_of_play && self.previous_mode == Some(GameMode::Normal) && mode != GameMode::Normal;
+        let out = scenario.end_episode_on_out_of_play
+            && self.previous_mode == Some(GameMode::Normal)
+            && mode != GameMode::Normal;
         let lost = scenario.end_episode_on_possession_change
             && matches!((self.previous_owner, owner), (Some(a), Some(b)) if a != b);
         self.previous_mode = Some(mode);

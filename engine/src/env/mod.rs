@@ -17,7 +17,7 @@ use crate::game::{Action, ActionSet, GameMode, Kick, KickTarget, Match, PlayerIn
 use crate::geometry::Side;
 use crate::obs::RawObservation;
 use crate::player::{DRIBBLE_SPEED, WALK_SPEED};
-use crate::reward::{scoring_reward, CheckpointTracker};
+use crate::reward::{CheckpointTracker, scoring_reward};
 use crate::scenario::Scenario;
 use end::EndTracker;
 
@@ -261,7 +261,12 @@ impl Env {
         self.waiting_for_game = if self.game.mode() == GameMode::Normal { 0 } else { self.waiting_for_game + 1 };
         for side in Side::BOTH {
             let (start, len) = self.controller_span(side);
-            control::update(&self.game, side, &mut self.controlled[start..start + len], self.fixed_control[side.index()]);
+            control::update(
+                &self.game,
+                side,
+                &mut self.controlled[start..start + len],
+                self.fixed_control[side.index()],
+            );
         }
         self.refresh_observations();
 
@@ -272,7 +277,8 @@ impl Env {
         let mut checkpoint_total = 0.0;
         for i in 0..self.controllers.len() {
             let r = if self.controllers[i].side == Side::Left { scoring } else { -scoring };
-            let bonus = if self.config.checkpoints { self.checkpoints[i].reward(r, &self.observations[i]) } else { 0.0 };
+            let bonus =
+                if self.config.checkpoints { self.checkpoints[i].reward(r, &self.observations[i]) } else { 0.0 };
             checkpoint_total += bonus;
             self.rewards[i] = r + bonus;
         }
@@ -352,8 +358,19 @@ impl Env {
             let c = self.controllers[i];
             let designated = control::designated(&self.game, c.side);
             let active = Some(self.controlled[i]);
-            let designated = if self.fixed_control[c.side.index()] || self.controller_span(c.side).1 > 1 { designated } else { active };
-            self.observations[i].fill(&self.game, c.side, active, designated, c.sticky.bits(c.side == Side::Right), steps_left);
+            let designated = if self.fixed_control[c.side.index()] || self.controller_span(c.side).1 > 1 {
+                designated
+            } else {
+                active
+            };
+            self.observations[i].fill(
+                &self.game,
+                c.side,
+                active,
+                designated,
+                c.sticky.bits(c.side == Side::Right),
+                steps_left,
+            );
         }
     }
 

@@ -2,7 +2,7 @@
 //! released; pass, shot and sliding buttons last one step; `builtin_ai` hands the player to the
 //! built-in AI until any other action arrives.
 
-use crate::game::{Action, KickKind, DIRECTIONS};
+use crate::game::{Action, DIRECTIONS, KickKind};
 
 /// What one step's action asks beyond the held state.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

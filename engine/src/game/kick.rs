@@ -6,7 +6,7 @@ use glam::{Vec2, Vec3};
 
 use super::input::{Kick, KickKind};
 use crate::geometry::pitch::{BALL_RADIUS, GOAL_HALF_WIDTH, GRAVITY, HALF_LENGTH};
-use crate::physics::{Ball, BALL_DRAG, ROLL_DECELERATION, ROLL_VISCOUS};
+use crate::physics::{BALL_DRAG, Ball, ROLL_DECELERATION, ROLL_VISCOUS};
 use crate::player::Player;
 use crate::rng::MatchRng;
 
@@ -64,7 +64,9 @@ pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2
     let dir = rotate_small(dir, rng.noise(error * 1.7).clamp(-0.19, 0.19));
     let velocity = match kick.kind {
         KickKind::ShortPass => {
-            let speed = ground_pass_speed(distance) * (1.0 + 0.1 * kick.power) * (1.0 + rng.noise(0.05 * (1.0 - accuracy) + 0.01));
+            let speed = ground_pass_speed(distance)
+                * (1.0 + 0.1 * kick.power)
+                * (1.0 + rng.noise(0.05 * (1.0 - accuracy) + 0.01));
             (dir * speed.min(MAX_GROUND_PASS)).extend(0.0)
         }
         KickKind::LongPass => {
@@ -126,7 +128,13 @@ fn preferred_distance(kind: KickKind) -> (f32, f32) {
 /// The best team-mate to receive a pass of `kind` played in `direction` (unit, global frame) by
 /// `kicker`, and the point to aim at (leading a moving receiver). Without team-mates the ball is
 /// played into space along `direction`.
-pub(crate) fn auto_target(kind: KickKind, kicker: &Player, mates: &[Player], opponents: &[Player], direction: Vec2) -> Vec2 {
+pub(crate) fn auto_target(
+    kind: KickKind,
+    kicker: &Player,
+    mates: &[Player],
+    opponents: &[Player],
+    direction: Vec2,
+) -> Vec2 {
     let (short, long) = preferred_distance(kind);
     let mut best = None;
     let mut best_score = f32::NEG_INFINITY;

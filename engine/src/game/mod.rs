@@ -11,7 +11,6 @@ mod tick;
 use std::ops::Range;
 use std::sync::Arc;
 
-
 pub use action::{Action, ActionSet, DIRECTIONS};
 pub use input::{Kick, KickKind, KickTarget, PlayerInput};
 pub use mode::GameMode;
@@ -103,7 +102,10 @@ impl Match {
         let n = players.len();
         let ball_start = ball_start_to_world(scenario.ball_position[0], scenario.ball_position[1]);
         Match {
-            ai: [TeamAi::new(Side::Left, difficulty[0], left.len()), TeamAi::new(Side::Right, difficulty[1], right.len())],
+            ai: [
+                TeamAi::new(Side::Left, difficulty[0], left.len()),
+                TeamAi::new(Side::Right, difficulty[1], right.len()),
+            ],
             players,
             ranges,
             formations: [left.to_vec(), right.to_vec()],

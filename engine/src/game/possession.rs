@@ -4,7 +4,7 @@
 use glam::Vec3;
 
 use super::{GameMode, Match};
-use crate::geometry::pitch::{in_penalty_area, BALL_RADIUS};
+use crate::geometry::pitch::{BALL_RADIUS, in_penalty_area};
 
 /// Horizontal reach (m) of an outfield player for a loose ball.
 const FOOT_REACH: f32 = 0.7;
@@ -121,7 +121,8 @@ impl Match {
             // A shot: the keeper gets a hand to it only with a chance that falls with the ball's
             // speed and with how far he must stretch; a miss lets it fly on.
             let stretch = best_d2.sqrt() / DIVE_REACH;
-            let chance = (1.15 - 0.7 * stretch - (relative - SHOT_SPEED) / 30.0).clamp(0.05, 0.95) * (0.75 + 0.25 * self.skill(g));
+            let chance = (1.15 - 0.7 * stretch - (relative - SHOT_SPEED) / 30.0).clamp(0.05, 0.95)
+                * (0.75 + 0.25 * self.skill(g));
             if !self.rng.chance(chance) {
                 self.players[g].touch_cooldown = 30;
                 return;

@@ -3,9 +3,9 @@
 use glam::Vec2;
 
 use super::kick::{auto_target, launch};
-use super::{GameMode, KickKind, Match, Phase, GOAL_DEAD_TICKS, OUT_DEAD_TICKS};
+use super::{GOAL_DEAD_TICKS, GameMode, KickKind, Match, OUT_DEAD_TICKS, Phase};
 use crate::game::input::Kick;
-use crate::physics::{move_player, separate_players, MotionLimits, TICK_SECONDS};
+use crate::physics::{MotionLimits, TICK_SECONDS, move_player, separate_players};
 use crate::player::DRIBBLE_SPEED;
 use crate::rules::{self, Restart, Stoppage};
 
@@ -45,7 +45,8 @@ impl Match {
         let owner_before = self.owner;
         self.settle_possession();
         self.owner_ticks = if self.owner.is_some() && self.owner == owner_before { self.owner_ticks + 1 } else { 0 };
-        if let Some(stoppage) = rules::judge(before, self.ball.position, self.last_touch.map(|g| self.players[g].side)) {
+        if let Some(stoppage) = rules::judge(before, self.ball.position, self.last_touch.map(|g| self.players[g].side))
+        {
             self.stop_play(stoppage);
         }
         for p in &mut self.players {
@@ -102,7 +103,12 @@ impl Match {
                 self.execute_kick(g, kick);
             }
             let p = &mut self.players[g];
-            if input.slide && self.owner != Some(g) && p.slide_ticks == 0 && p.dive_ticks == 0 && self.mode == GameMode::Normal {
+            if input.slide
+                && self.owner != Some(g)
+                && p.slide_ticks == 0
+                && p.dive_ticks == 0
+                && self.mode == GameMode::Normal
+            {
                 let dir = if input.velocity.length_squared() > 0.01 { input.velocity.normalize() } else { p.facing };
                 let own_goal = -p.side.attack_sign();
                 if p.is_keeper() && crate::geometry::pitch::in_penalty_area(p.position.x, p.position.y, own_goal) {
@@ -127,7 +133,8 @@ impl Match {
             super::KickTarget::Point(p) => p,
             super::KickTarget::Direction(dir) => {
                 if kick.kind == KickKind::Shot {
-                    let keeper_y = self.team(side.opponent()).iter().find(|p| p.is_keeper() && p.active).map(|k| k.position.y);
+                    let keeper_y =
+                        self.team(side.opponent()).iter().find(|p| p.is_keeper() && p.active).map(|k| k.position.y);
                     super::kick::shot_target(side.attack_sign(), keeper_y, self.players[g].position.y)
                 } else {
                     let (mates, opponents) = (self.team(side), self.team(side.opponent()));

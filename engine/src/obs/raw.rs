@@ -69,7 +69,15 @@ fn per_step(v: glam::Vec2) -> [f32; 2] {
 impl RawObservation {
     /// Writes the state of `game` as seen by `viewer`'s controller into `self`, reusing its
     /// buffers (no allocation once sized).
-    pub fn fill(&mut self, game: &Match, viewer: Side, active: Option<usize>, designated: Option<usize>, sticky: [u8; 10], steps_left: u32) {
+    pub fn fill(
+        &mut self,
+        game: &Match,
+        viewer: Side,
+        active: Option<usize>,
+        designated: Option<usize>,
+        sticky: [u8; 10],
+        steps_left: u32,
+    ) {
         let frame = TeamFrame::of(viewer);
         let ball = game.ball();
         let b = frame.vec3(ball.position);

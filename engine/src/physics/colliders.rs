@@ -4,7 +4,7 @@
 use glam::Vec3;
 use rapier3d::geometry::{ColliderBuilder, ColliderHandle, ColliderSet};
 use rapier3d::parry::math::Pose;
-use rapier3d::parry::query::{cast_shapes, PointQuery, ShapeCastOptions, ShapeCastStatus};
+use rapier3d::parry::query::{PointQuery, ShapeCastOptions, ShapeCastStatus, cast_shapes};
 use rapier3d::parry::shape::Ball as BallShape;
 
 use crate::geometry::pitch::{BALL_RADIUS, GOAL_DEPTH, GOAL_HALF_WIDTH, GOAL_HEIGHT, HALF_LENGTH, POST_RADIUS};
@@ -85,9 +85,11 @@ impl PitchColliders {
             let post_y = GOAL_HALF_WIDTH + POST_RADIUS;
             let parts = &mut goals[i];
             for y in [-post_y, post_y] {
-                let h = set.insert(
-                    ColliderBuilder::capsule_z(POST_TOP / 2.0, POST_RADIUS).translation(Vec3::new(line_x, y, POST_TOP / 2.0)),
-                );
+                let h = set.insert(ColliderBuilder::capsule_z(POST_TOP / 2.0, POST_RADIUS).translation(Vec3::new(
+                    line_x,
+                    y,
+                    POST_TOP / 2.0,
+                )));
                 parts.push((h, Surface::Post));
             }
             let bar = set
@@ -95,20 +97,25 @@ impl PitchColliders {
             parts.push((bar, Surface::Crossbar));
             let mid_x = line_x + sign * GOAL_DEPTH / 2.0;
             let half_h = POST_TOP / 2.0;
-            let back = set.insert(
-                ColliderBuilder::cuboid(NET_HALF_THICKNESS, post_y, half_h)
-                    .translation(Vec3::new(line_x + sign * (GOAL_DEPTH + NET_HALF_THICKNESS), 0.0, half_h)),
-            );
+            let back = set.insert(ColliderBuilder::cuboid(NET_HALF_THICKNESS, post_y, half_h).translation(Vec3::new(
+                line_x + sign * (GOAL_DEPTH + NET_HALF_THICKNESS),
+                0.0,
+                half_h,
+            )));
             parts.push((back, Surface::Net));
             for y in [-(post_y + NET_HALF_THICKNESS), post_y + NET_HALF_THICKNESS] {
                 let side = set.insert(
-                    ColliderBuilder::cuboid(GOAL_DEPTH / 2.0, NET_HALF_THICKNESS, half_h).translation(Vec3::new(mid_x, y, half_h)),
+                    ColliderBuilder::cuboid(GOAL_DEPTH / 2.0, NET_HALF_THICKNESS, half_h)
+                        .translation(Vec3::new(mid_x, y, half_h)),
                 );
                 parts.push((side, Surface::Net));
             }
             let roof = set.insert(
-                ColliderBuilder::cuboid(GOAL_DEPTH / 2.0, post_y, NET_HALF_THICKNESS)
-                    .translation(Vec3::new(mid_x, 0.0, POST_TOP + NET_HALF_THICKNESS)),
+                ColliderBuilder::cuboid(GOAL_DEPTH / 2.0, post_y, NET_HALF_THICKNESS).translation(Vec3::new(
+                    mid_x,
+                    0.0,
+                    POST_TOP + NET_HALF_THICKNESS,
+                )),
             );
             parts.push((roof, Surface::Net));
         }

@@ -5,9 +5,9 @@ mod ball;
 mod colliders;
 mod player_motion;
 
-pub use ball::{Ball, BALL_DRAG, BOUNCE_RESTITUTION, ROLL_DECELERATION, ROLL_VISCOUS};
+pub use ball::{BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_VISCOUS};
 pub use colliders::{PitchColliders, Surface};
-pub(crate) use player_motion::{keep_inside_rim, move_player, separate_players, MotionLimits};
+pub(crate) use player_motion::{MotionLimits, keep_inside_rim, move_player, separate_players};
 
 /// Length of one tick (s): 10 ms, GRF's physics step (grf.md §7.1).
 pub const TICK_SECONDS: f32 = 0.01;

@@ -31,18 +31,8 @@ pub enum Role {
 
 impl Role {
     /// All roles in numeric order.
-    pub const ALL: [Role; 10] = [
-        Role::GK,
-        Role::CB,
-        Role::LB,
-        Role::RB,
-        Role::DM,
-        Role::CM,
-        Role::LM,
-        Role::RM,
-        Role::AM,
-        Role::CF,
-    ];
+    pub const ALL: [Role; 10] =
+        [Role::GK, Role::CB, Role::LB, Role::RB, Role::DM, Role::CM, Role::LM, Role::RM, Role::AM, Role::CF];
 
     /// The role's short name (`"GK"`, `"CB"`, …).
     pub fn name(self) -> &'static str {

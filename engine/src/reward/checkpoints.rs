@@ -54,7 +54,13 @@ mod tests {
     use super::*;
 
     fn owning_at(x: f32, y: f32) -> RawObservation {
-        RawObservation { ball: [x, y, 0.11], ball_owned_team: 0, ball_owned_player: 1, active: 1, ..RawObservation::default() }
+        RawObservation {
+            ball: [x, y, 0.11],
+            ball_owned_team: 0,
+            ball_owned_player: 1,
+            active: 1,
+            ..RawObservation::default()
+        }
     }
 
     #[test]

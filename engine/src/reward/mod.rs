@@ -3,5 +3,5 @@
 mod checkpoints;
 mod scoring;
 
-pub use checkpoints::{checkpoint_threshold, CheckpointTracker, CHECKPOINT_COUNT, CHECKPOINT_REWARD};
+pub use checkpoints::{CHECKPOINT_COUNT, CHECKPOINT_REWARD, CheckpointTracker, checkpoint_threshold};
 pub use scoring::scoring_reward;

@@ -12,8 +12,8 @@ use glam::{Vec2, Vec3};
 
 use super::Restart;
 use crate::game::GameMode;
-use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
 use crate::geometry::Side;
+use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
 
 /// The corner for `attacking` after the ball went out at `at` (m).
 pub fn restart(attacking: Side, at: Vec3) -> Restart {

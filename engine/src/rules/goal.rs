@@ -13,8 +13,8 @@
 
 use glam::Vec3;
 
-use crate::geometry::pitch::{GOAL_HALF_WIDTH, GOAL_HEIGHT, GOAL_LINE_OUT_X};
 use crate::geometry::Side;
+use crate::geometry::pitch::{GOAL_HALF_WIDTH, GOAL_HEIGHT, GOAL_LINE_OUT_X};
 
 /// The team credited with a goal if the ball moving from `before` to `after` (m) went in.
 pub fn scored(before: Vec3, after: Vec3) -> Option<Side> {

@@ -12,8 +12,8 @@ use glam::Vec2;
 
 use super::Restart;
 use crate::game::GameMode;
-use crate::geometry::pitch::GOAL_KICK_X;
 use crate::geometry::Side;
+use crate::geometry::pitch::GOAL_KICK_X;
 
 /// The goal kick for the team defending the goal the ball went past.
 pub fn restart(defending: Side) -> Restart {

@@ -28,10 +28,7 @@ pub fn after_goal(scorer: Side) -> Restart {
 
 /// Closest distance (m) of a formation's players to the centre spot.
 fn nearest_to_centre(m: &Match, side: Side) -> f32 {
-    m.formations[side.index()]
-        .iter()
-        .map(|e| formation_to_world(side, e.x, e.y).length())
-        .fold(f32::INFINITY, f32::min)
+    m.formations[side.index()].iter().map(|e| formation_to_world(side, e.x, e.y).length()).fold(f32::INFINITY, f32::min)
 }
 
 /// Places both teams for a kickoff by `kicking`.

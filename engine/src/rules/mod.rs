@@ -14,8 +14,8 @@ use glam::{Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
 use crate::game::{GameMode, Match};
-use crate::geometry::pitch::{GOAL_LINE_OUT_X, TOUCH_LINE_OUT_Y};
 use crate::geometry::Side;
+use crate::geometry::pitch::{GOAL_LINE_OUT_X, TOUCH_LINE_OUT_Y};
 
 /// How play restarts: the set piece, the team taking it and where (m, global frame).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -47,7 +47,8 @@ pub(crate) fn set_up(m: &mut Match, restart: Restart) {
             if away.length() < CENTRE_CIRCLE_RADIUS {
                 let moved = restart.spot + away.normalize_or(inward) * CENTRE_CIRCLE_RADIUS;
                 // Stay on the field: near a line the distance is kept along it instead.
-                p.position = Vec2::new(moved.x.clamp(-HALF_LENGTH, HALF_LENGTH), moved.y.clamp(-HALF_WIDTH, HALF_WIDTH));
+                p.position =
+                    Vec2::new(moved.x.clamp(-HALF_LENGTH, HALF_LENGTH), moved.y.clamp(-HALF_WIDTH, HALF_WIDTH));
             }
         }
     }

@@ -12,8 +12,8 @@ use glam::{Vec2, Vec3};
 
 use super::Restart;
 use crate::game::GameMode;
-use crate::geometry::pitch::{HALF_WIDTH, THROW_IN_MAX_X};
 use crate::geometry::Side;
+use crate::geometry::pitch::{HALF_WIDTH, THROW_IN_MAX_X};
 
 /// The throw-in for `side` after the ball went out at `at` (m).
 pub fn restart(side: Side, at: Vec3) -> Restart {

@@ -27,11 +27,7 @@ fn the_conceding_team_kicks_off() {
         assert_eq!(env.info().game_mode, GameMode::Normal, "the kickoff counts as taken at once");
         let game = env.game();
         assert!(game.ball().xy().length() < 1.0, "ball at {}", game.ball().xy());
-        let nearest = game
-            .players()
-            .iter()
-            .min_by(|a, b| a.position.length().total_cmp(&b.position.length()))
-            .unwrap();
+        let nearest = game.players().iter().min_by(|a, b| a.position.length().total_cmp(&b.position.length())).unwrap();
         assert_eq!(nearest.side, scorer.opponent(), "the conceding team stands at the ball");
         for p in game.players() {
             assert!(p.position.x * p.side.attack_sign() <= 1.0, "{p:?} is in the opponents' half");

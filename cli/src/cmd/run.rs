@@ -1,0 +1,392 @@
+//! `touchline run`: play episodes of a scenario with a simple policy.
+//!
+//! Prints one line per episode (index, score, steps, controller 0's return, how it ended) and a
+//! summary; or, with `--json`, one JSON document ([`Report`]) and nothing else on stdout.
+
+use std::io::{self, IsTerminal, Write};
+use std::time::{Duration, Instant};
+
+use clap::{Args, ValueEnum};
+use indicatif::{ProgressBar, ProgressStyle};
+use rand::{Rng, SeedableRng};
+use rand_pcg::Pcg64Mcg;
+use serde::Serialize;
+use touchline_engine::{Action, ActionSet, Env, EnvConfig, Scenario};
+
+use crate::CliError;
+
+/// Arguments of `touchline run`.
+#[derive(Debug, Args)]
+pub(crate) struct RunArgs {
+    /// A stdlib scenario name (see `touchline scenarios`) or the path of a compiled `.json`
+    /// scenario.
+    scenario: String,
+
+    /// Episodes to play; the first starts from the seed, each later one from `reset()`.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    episodes: u64,
+
+    /// Seed of the environment (the random policy draws from its own generator seeded from it).
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+
+    /// Who chooses the controlled players' actions.
+    #[arg(long, value_enum, default_value_t = Policy::Builtin)]
+    policy: Policy,
+
+    /// Print one JSON document with every episode and the summary on stdout, and nothing else.
+    #[arg(long)]
+    json: bool,
+
+    /// Left-team players the agents control.
+    #[arg(long, default_value_t = 1)]
+    left_agents: usize,
+
+    /// Right-team players the agents control.
+    #[arg(long, default_value_t = 0)]
+    right_agents: usize,
+
+    /// Add GRF's Checkpoint reward to the Scoring reward.
+    #[arg(long)]
+    checkpoints: bool,
+}
+
+/// How actions are chosen for every controlled player.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub(crate) enum Policy {
+    /// Always `idle`.
+    Idle,
+    /// Uniformly at random from the 19-action default set, every step.
+    Random,
+    /// The built-in AI plays the controlled players too (`builtin_ai` of the `v2` action set).
+    Builtin,
+}
+
+impl Policy {
+    fn name(self) -> &'static str {
+        match self {
+            Policy::Idle => "idle",
+            Policy::Random => "random",
+            Policy::Builtin => "builtin",
+        }
+    }
+
+    fn action_set(self) -> ActionSet {
+        match self {
+            Policy::Builtin => ActionSet::V2,
+            Policy::Idle | Policy::Random => ActionSet::Default,
+        }
+    }
+}
+
+/// Offset mixed into the seed of the random policy's generator, so that it does not share a seed
+/// with the engine's own generator (the 64-bit golden ratio, a common seed-mixing constant).
+const POLICY_SEED_OFFSET: u64 = 0x9E37_79B9_7F4A_7C15;
+
+/// A policy with its state.
+enum Agent {
+    /// The same action every step.
+    Fixed(Action),
+    /// Uniform draws from `set`.
+    Random { rng: Pcg64Mcg, set: ActionSet },
+}
+
+impl Agent {
+    fn new(policy: Policy, seed: u64) -> Agent {
+        match policy {
+            Policy::Idle => Agent::Fixed(Action::Idle),
+            Policy::Builtin => Agent::Fixed(Action::BuiltinAi),
+            Policy::Random => Agent::Random {
+                rng: Pcg64Mcg::seed_from_u64(seed.wrapping_add(POLICY_SEED_OFFSET)),
+                set: policy.action_set(),
+            },
+        }
+    }
+
+    /// Writes one action per controller into `actions`.
+    fn act(&mut self, actions: &mut [Action]) {
+        match self {
+            Agent::Fixed(action) => actions.fill(*action),
+            Agent::Random { rng, set } => {
+                let choices = set.actions();
+                for a in actions {
+                    *a = choices[rng.random_range(0..choices.len())];
+                }
+            }
+        }
+    }
+}
+
+/// What `--json` prints.
+#[derive(Debug, Serialize)]
+struct Report<'a> {
+    /// The scenario as given on the command line.
+    scenario: &'a str,
+    seed: u64,
+    policy: Policy,
+    /// `"default"` (19 actions) or `"v2"` (20, with `builtin_ai`).
+    action_set: &'static str,
+    left_agents: usize,
+    right_agents: usize,
+    checkpoints: bool,
+    episodes: Vec<EpisodeRecord>,
+    summary: Summary,
+}
+
+/// One played episode.
+#[derive(Debug, Serialize)]
+struct EpisodeRecord {
+    /// 0-based episode index (the engine's `StepInfo::episode`).
+    episode: u64,
+    /// Goals `[left, right]`.
+    score: [u32; 2],
+    /// Env steps played (at most `game_duration + 1`).
+    steps: u32,
+    /// Sum of controller 0's rewards over the episode (0 when no player is controlled).
+    reward: f64,
+    /// The scenario's end conditions held at the last step.
+    terminated: bool,
+    /// The time limit was reached at the last step.
+    truncated: bool,
+}
+
+impl EpisodeRecord {
+    /// How the episode ended, in one word (`terminated` wins when both flags are set).
+    fn ended(&self) -> &'static str {
+        if self.terminated { "terminated" } else { "truncated" }
+    }
+}
+
+/// Totals and means over all episodes.
+#[derive(Debug, Serialize)]
+struct Summary {
+    episodes: u64,
+    /// Mean goals per episode `[left, right]`.
+    mean_score: [f64; 2],
+    /// Goals by both teams over all episodes.
+    total_goals: u64,
+    total_steps: u64,
+    mean_steps: f64,
+    /// Mean of the episodes' `reward`.
+    mean_reward: f64,
+    /// Wall-clock seconds spent stepping and resetting (not loading).
+    wall_seconds: f64,
+    /// `total_steps / wall_seconds`; `null` when too little time passed to measure.
+    steps_per_second: Option<f64>,
+}
+
+impl Summary {
+    fn new(records: &[EpisodeRecord], elapsed: Duration) -> Summary {
+        let n = records.len().max(1) as f64;
+        let goals = |side: usize| records.iter().map(|r| u64::from(r.score[side])).sum::<u64>();
+        let total_steps: u64 = records.iter().map(|r| u64::from(r.steps)).sum();
+        let wall_seconds = elapsed.as_secs_f64();
+        Summary {
+            episodes: records.len() as u64,
+            mean_score: [goals(0) as f64 / n, goals(1) as f64 / n],
+            total_goals: goals(0) + goals(1),
+            total_steps,
+            mean_steps: total_steps as f64 / n,
+            mean_reward: records.iter().map(|r| r.reward).sum::<f64>() / n,
+            wall_seconds,
+            steps_per_second: (wall_seconds > 0.0).then(|| total_steps as f64 / wall_seconds),
+        }
+    }
+}
+
+/// Runs `touchline run`.
+pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
+    let scenario = touchline_dsl::load(&args.scenario)?;
+    let config = EnvConfig {
+        left_agents: args.left_agents,
+        right_agents: args.right_agents,
+        action_set: args.policy.action_set(),
+        checkpoints: args.checkpoints,
+    };
+    let controllable = scenario.controllable_players();
+    let expected_steps = u64::from(scenario.game_duration) + 1;
+    let mut env = Env::with_config(scenario, config, args.seed).map_err(|source| CliError::Config {
+        scenario: args.scenario.clone(),
+        help: format!(
+            "this scenario has {} controllable left and {} controllable right players; \
+             pass --left-agents and --right-agents within those numbers",
+            controllable[0], controllable[1]
+        ),
+        source,
+    })?;
+
+    let mut out = io::stdout().lock();
+    let bar = progress_bar(args, expected_steps);
+    if !args.json {
+        bar.suspend(|| write_header(&mut out, args, env.scenario(), env.num_controllers()))?;
+    }
+
+    let mut agent = Agent::new(args.policy, args.seed);
+    let mut actions = vec![Action::Idle; env.num_controllers()];
+    let mut records = Vec::new();
+    let start = Instant::now();
+    for i in 0..args.episodes {
+        if i > 0 {
+            env.reset();
+        }
+        let mut reward = 0.0_f64;
+        let outcome = loop {
+            agent.act(&mut actions);
+            let outcome = env.step(&actions).map_err(|source| CliError::Engine {
+                episode: env.info().episode,
+                steps: env.info().steps,
+                source,
+            })?;
+            reward += f64::from(env.rewards().first().copied().unwrap_or(0.0));
+            bar.inc(1);
+            if outcome.terminated || outcome.truncated {
+                break outcome;
+            }
+        };
+        let info = env.info();
+        let record = EpisodeRecord {
+            episode: info.episode,
+            score: info.score,
+            steps: info.steps,
+            reward,
+            terminated: outcome.terminated,
+            truncated: outcome.truncated,
+        };
+        // The bar's length assumed every episode runs to the time limit: drop what was not played.
+        bar.set_length(bar.length().unwrap_or(0).saturating_sub(expected_steps.saturating_sub(u64::from(info.steps))));
+        if !args.json {
+            bar.suspend(|| {
+                writeln!(
+                    out,
+                    "{:>7}  {:>5}  {:>5}  {:>7.3}  {}",
+                    record.episode,
+                    format!("{}-{}", record.score[0], record.score[1]),
+                    record.steps,
+                    record.reward,
+                    record.ended()
+                )
+            })?;
+        }
+        records.push(record);
+    }
+    let elapsed = start.elapsed();
+    bar.finish_and_clear();
+
+    let summary = Summary::new(&records, elapsed);
+    if args.json {
+        let report = Report {
+            scenario: &args.scenario,
+            seed: args.seed,
+            policy: args.policy,
+            action_set: env.action_set().name(),
+            left_agents: args.left_agents,
+            right_agents: args.right_agents,
+            checkpoints: args.checkpoints,
+            episodes: records,
+            summary,
+        };
+        serde_json::to_writer_pretty(&mut out, &report).map_err(io::Error::from)?;
+        writeln!(out)?;
+    } else {
+        write_summary(&mut out, &summary)?;
+    }
+    out.flush()?;
+    Ok(())
+}
+
+/// A progress bar over the expected total of steps, on stderr; hidden with `--json`, when stderr
+/// is not a terminal, or for a single short episode.
+fn progress_bar(args: &RunArgs, expected_steps: u64) -> ProgressBar {
+    let total = expected_steps.saturating_mul(args.episodes);
+    let worth_it = args.episodes > 1 || total > 1000;
+    if args.json || !worth_it || !io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let style = ProgressStyle::with_template(
+        "{spinner} [{elapsed_precise}] {wide_bar} {human_pos}/{human_len} steps, eta {eta}",
+    )
+    .unwrap_or_else(|_| ProgressStyle::default_bar());
+    ProgressBar::new(total).with_style(style)
+}
+
+fn write_header(out: &mut impl Write, args: &RunArgs, scenario: &Scenario, controllers: usize) -> io::Result<()> {
+    let name = if scenario.name.is_empty() { args.scenario.as_str() } else { scenario.name.as_str() };
+    writeln!(
+        out,
+        "{name}: {} episode{}, seed {}, policy {}, {controllers} controlled player{} ({} left, {} right)",
+        args.episodes,
+        if args.episodes == 1 { "" } else { "s" },
+        args.seed,
+        args.policy.name(),
+        if controllers == 1 { "" } else { "s" },
+        args.left_agents,
+        args.right_agents,
+    )?;
+    writeln!(out, "episode  score  steps   reward  ended")
+}
+
+fn write_summary(out: &mut impl Write, s: &Summary) -> io::Result<()> {
+    writeln!(out)?;
+    writeln!(out, "episodes     {}", s.episodes)?;
+    writeln!(out, "mean score   {:.2} - {:.2}", s.mean_score[0], s.mean_score[1])?;
+    writeln!(out, "total goals  {}", s.total_goals)?;
+    writeln!(out, "mean steps   {:.1}", s.mean_steps)?;
+    writeln!(out, "mean reward  {:.3}", s.mean_reward)?;
+    match s.steps_per_second {
+        Some(rate) => writeln!(out, "steps/s      {rate:.0} ({} steps in {:.3} s)", s.total_steps, s.wall_seconds),
+        None => writeln!(out, "steps/s      - ({} steps, too fast to time)", s.total_steps),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn random_policy_draws_every_action_of_the_set() {
+        let mut agent = Agent::new(Policy::Random, 3);
+        let mut seen = [false; 19];
+        let mut actions = [Action::Idle; 4];
+        for _ in 0..500 {
+            agent.act(&mut actions);
+            for a in actions {
+                let index = ActionSet::Default.encode(a).expect("drawn from the default set");
+                seen[index as usize] = true;
+            }
+        }
+        assert!(seen.iter().all(|s| *s));
+    }
+
+    #[test]
+    fn random_policy_is_seeded() {
+        let draw = |seed| {
+            let mut agent = Agent::new(Policy::Random, seed);
+            let mut actions = [Action::Idle; 16];
+            agent.act(&mut actions);
+            actions
+        };
+        assert_eq!(draw(1), draw(1));
+        assert_ne!(draw(1), draw(2));
+    }
+
+    #[test]
+    fn summary_means() {
+        let record = |score: [u32; 2], steps, reward| EpisodeRecord {
+            episode: 0,
+            score,
+            steps,
+            reward,
+            terminated: true,
+            truncated: false,
+        };
+        let s = Summary::new(&[record([1, 0], 10, 1.0), record([0, 2], 30, -1.0)], Duration::from_secs(2));
+        assert_eq!(s.mean_score, [0.5, 1.0]);
+        assert_eq!(s.total_goals, 3);
+        assert_eq!(s.total_steps, 40);
+        assert_eq!(s.mean_steps, 20.0);
+        assert_eq!(s.mean_reward, 0.0);
+        assert_eq!(s.steps_per_second, Some(20.0));
+        assert_eq!(Summary::new(&[], Duration::ZERO).steps_per_second, None);
+    }
+}

@@ -1,0 +1,44 @@
+//! `touchline scenarios`: the stdlib scenarios, one a line, with their size, length and
+//! description.
+
+use std::io::{self, Write};
+
+use clap::Args;
+
+use crate::CliError;
+
+/// Arguments of `touchline scenarios`.
+#[derive(Debug, Args)]
+pub(crate) struct ScenariosArgs {
+    /// Print only the names, one a line (for scripts).
+    #[arg(long)]
+    names: bool,
+}
+
+/// Runs `touchline scenarios`.
+pub(crate) fn run(args: &ScenariosArgs) -> Result<(), CliError> {
+    let names = touchline_dsl::stdlib::names();
+    let mut out = io::stdout().lock();
+    if args.names {
+        for name in names {
+            writeln!(out, "{name}")?;
+        }
+        return Ok(out.flush()?);
+    }
+    let width = names.iter().map(|n| n.len()).max().unwrap_or(0);
+    writeln!(out, "{:width$}  players  steps  description", "scenario")?;
+    for name in names {
+        // Embedded scenarios are tested to parse; print the bare name should one ever fail.
+        match touchline_dsl::stdlib::scenario(name) {
+            Some(s) => writeln!(
+                out,
+                "{name:width$}  {:>7}  {:>5}  {}",
+                format!("{}v{}", s.left_team.len(), s.right_team.len()),
+                s.game_duration,
+                s.description
+            )?,
+            None => writeln!(out, "{name}")?,
+        }
+    }
+    Ok(out.flush()?)
+}

@@ -1,0 +1,119 @@
+//! Runs the built `touchline` binary: output shapes, exit codes and diagnostics.
+
+use std::process::{Command, Output};
+
+/// Runs `touchline` with `args` in a fixed environment: no colour, no hyperlinks, no forced terminal
+/// features, so that diagnostics render the same on every machine.
+fn touchline(args: &[&str]) -> Output {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_touchline"));
+    cmd.args(args);
+    for var in ["FORCE_COLOR", "CLICOLOR_FORCE", "FORCE_HYPERLINK", "NO_GRAPHICS", "COLUMNS"] {
+        cmd.env_remove(var);
+    }
+    cmd.env("NO_COLOR", "1");
+    match cmd.output() {
+        Ok(output) => output,
+        Err(e) => panic!("cannot run {}: {e}", env!("CARGO_BIN_EXE_touchline")),
+    }
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+#[test]
+fn run_json_reports_every_episode() {
+    let output = touchline(&["run", "academy_empty_goal_close", "--episodes", "3", "--policy", "builtin", "--json"]);
+    assert_eq!(output.status.code(), Some(0), "stderr: {}", stderr(&output));
+    let report: serde_json::Value = serde_json::from_slice(&output.stdout).expect("stdout is one JSON document");
+    let episodes = report["episodes"].as_array().expect("an `episodes` array");
+    assert_eq!(episodes.len(), 3);
+    for (i, episode) in episodes.iter().enumerate() {
+        assert_eq!(episode["episode"].as_u64(), Some(i as u64));
+        let steps = episode["steps"].as_u64().expect("steps");
+        assert!((1..=401).contains(&steps), "episode {i}: {steps} steps");
+        let ended = [&episode["terminated"], &episode["truncated"]];
+        assert!(ended.iter().any(|flag| flag.as_bool() == Some(true)), "episode {i} did not end");
+        assert_eq!(episode["score"].as_array().map(Vec::len), Some(2));
+    }
+    assert_eq!(report["summary"]["episodes"].as_u64(), Some(3));
+    assert_eq!(report["policy"].as_str(), Some("builtin"));
+    assert_eq!(report["action_set"].as_str(), Some("v2"));
+}
+
+#[test]
+fn run_prints_episodes_and_summary() {
+    let output =
+        touchline(&["run", "academy_empty_goal_close", "--episodes", "2", "--policy", "random", "--seed", "4"]);
+    assert_eq!(output.status.code(), Some(0), "stderr: {}", stderr(&output));
+    let text = stdout(&output);
+    let episode_lines =
+        text.lines().filter(|l| l.trim_end().ends_with("terminated") || l.trim_end().ends_with("truncated")).count();
+    assert_eq!(episode_lines, 2, "{text}");
+    for key in ["episodes     2", "mean score", "total goals", "mean steps", "mean reward", "steps/s"] {
+        assert!(text.contains(key), "missing `{key}` in\n{text}");
+    }
+}
+
+#[test]
+fn random_policy_is_reproducible() {
+    let args = ["run", "academy_empty_goal", "--episodes", "2", "--policy", "random", "--seed", "11", "--json"];
+    let episodes = |output: Output| {
+        let report: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+        report["episodes"].clone()
+    };
+    assert_eq!(episodes(touchline(&args)), episodes(touchline(&args)));
+}
+
+#[test]
+fn unknown_scenario_suggests_the_closest_name() {
+    let output = touchline(&["run", "academy_empty_goal_clos"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(output.stdout.is_empty());
+    let err = stderr(&output);
+    assert!(err.contains("`academy_empty_goal_close`"), "{err}");
+    insta::with_settings!({
+        // Colour codes, should a terminal feature be forced anyway.
+        filters => vec![(r"\x1b\[[0-9;]*m", "")],
+    }, {
+        insta::assert_snapshot!(err);
+    });
+}
+
+#[test]
+fn missing_json_file_exits_2() {
+    let output = touchline(&["run", "no/such/dir/scenario.json"]);
+    assert_eq!(output.status.code(), Some(2));
+    let err = stderr(&output);
+    assert!(err.contains("tl::E002") && err.contains("no/such/dir/scenario.json"), "{err}");
+}
+
+#[test]
+fn too_many_agents_exits_2() {
+    let output = touchline(&["run", "academy_empty_goal_close", "--left-agents", "5"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(stderr(&output).contains("controllable"), "{}", stderr(&output));
+}
+
+#[test]
+fn bogus_policy_is_a_usage_error() {
+    let output = touchline(&["run", "academy_empty_goal_close", "--policy", "bogus"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(stderr(&output).contains("bogus"));
+}
+
+#[test]
+fn scenarios_lists_the_stdlib() {
+    let output = touchline(&["scenarios"]);
+    assert_eq!(output.status.code(), Some(0));
+    let text = stdout(&output);
+    assert!(text.lines().any(|l| l.starts_with("academy_empty_goal_close ")), "{text}");
+
+    let names = stdout(&touchline(&["scenarios", "--names"]));
+    let names: Vec<&str> = names.lines().collect();
+    assert_eq!(names, touchline_dsl::stdlib::names());
+}

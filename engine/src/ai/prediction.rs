@@ -25,7 +25,7 @@ impl BallPath {
     pub fn predict(ball: &Ball) -> BallPath {
         let mut at = [Vec3::ZERO; SAMPLES];
         let (mut p, mut v) = (ball.position, ball.velocity);
-        const SUB: usize = 4;
+        const SUB: usize = 2;
         let dt = SAMPLE_DT / SUB as f32;
         for slot in &mut at {
             for _ in 0..SUB {

@@ -57,6 +57,8 @@ pub struct Match {
     pub(crate) owner: Option<usize>,
     /// Ticks the current owner has had the ball.
     pub(crate) owner_ticks: u32,
+    /// How far ahead of the owner the ball is (m); eases to half a metre after a trap.
+    pub(crate) carry_distance: f32,
     /// Player who touched the ball last.
     pub(crate) last_touch: Option<usize>,
     pub(crate) score: [u32; 2],
@@ -111,9 +113,10 @@ impl Match {
             formations: [left.to_vec(), right.to_vec()],
             difficulty,
             ball: Ball::at_rest(ball_start),
-            colliders: Arc::new(PitchColliders::new()),
+            colliders: PitchColliders::shared(),
             owner: None,
             owner_ticks: 0,
+            carry_distance: 0.5,
             last_touch: None,
             score: [0, 0],
             mode: GameMode::Normal,

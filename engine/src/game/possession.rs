@@ -137,8 +137,12 @@ impl Match {
             return;
         }
         if relative <= limit {
+            // He takes the ball where it is and brings it to his feet over the next ticks.
+            let to_ball = ball.xy() - self.players[g].position;
+            self.carry_distance = to_ball.length().clamp(0.3, STILL_BALL_REACH);
+            self.players[g].facing = to_ball.normalize_or(self.players[g].facing);
             self.owner = Some(g);
-            self.ball.velocity = p.velocity.extend(0.0);
+            self.ball.velocity = self.players[g].velocity.extend(0.0);
             self.ball.position.z = BALL_RADIUS;
             return;
         }

@@ -19,6 +19,8 @@ const SLIDE_SPEED: f32 = 7.5;
 /// Goalkeeper's dive: duration (ticks) and lateral speed (m/s).
 const DIVE_TICKS: u16 = 35;
 const DIVE_SPEED: f32 = 6.5;
+/// Where a dribbler keeps the ball: this far ahead of him (m).
+const CARRY_DISTANCE: f32 = 0.5;
 /// Top speed with the ball at one's feet (m/s): the ball slows a sprinter down a little.
 const BALL_CARRIER_SPRINT: f32 = 7.2;
 
@@ -192,7 +194,8 @@ impl Match {
         if let Some(g) = self.owner {
             // At the owner's feet, half a metre ahead of him.
             let p = &self.players[g];
-            let at = p.position + p.facing * 0.5;
+            self.carry_distance += (CARRY_DISTANCE - self.carry_distance).clamp(-0.01, 0.01);
+            let at = p.position + p.facing * self.carry_distance;
             self.ball.position = at.extend(crate::geometry::pitch::BALL_RADIUS);
             self.ball.velocity = p.velocity.extend(0.0);
             return;

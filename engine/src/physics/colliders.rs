@@ -4,7 +4,7 @@
 use glam::Vec3;
 use rapier3d::geometry::{ColliderBuilder, ColliderHandle, ColliderSet};
 use rapier3d::parry::math::Pose;
-use rapier3d::parry::query::{PointQuery, ShapeCastOptions, ShapeCastStatus, cast_shapes};
+use rapier3d::parry::query::{ShapeCastOptions, cast_shapes};
 use rapier3d::parry::shape::Ball as BallShape;
 
 use crate::geometry::pitch::{BALL_RADIUS, GOAL_DEPTH, GOAL_HALF_WIDTH, GOAL_HEIGHT, HALF_LENGTH, POST_RADIUS};
@@ -51,8 +51,9 @@ pub struct Hit {
 pub struct PitchColliders {
     set: ColliderSet,
     ground: ColliderHandle,
-    /// Per goal (left at -x, right at +x): the parts and what they are.
-    goals: [Vec<(ColliderHandle, Surface)>; 2],
+    /// Per goal (left at -x, right at +x): the parts, what they are, and their bounding boxes
+    /// grown by the ball's radius (min, max) for cheap culling before the exact cast.
+    goals: [Vec<(ColliderHandle, Surface, Vec3, Vec3)>; 2],
     ball: BallShape,
 }
 
@@ -68,6 +69,14 @@ impl Default for PitchColliders {
     }
 }
 
+impl PitchColliders {
+    /// The colliders every match shares: they never change, so they are built once per process.
+    pub fn shared() -> std::sync::Arc<PitchColliders> {
+        static SHARED: std::sync::OnceLock<std::sync::Arc<PitchColliders>> = std::sync::OnceLock::new();
+        SHARED.get_or_init(|| std::sync::Arc::new(PitchColliders::new())).clone()
+    }
+}
+
 /// Half height of a post capsule's segment: the post reaches the crossbar's centre line.
 const POST_TOP: f32 = GOAL_HEIGHT + POST_RADIUS;
 /// Net panels' half thickness (m).
@@ -79,11 +88,11 @@ impl PitchColliders {
         let mut set = ColliderSet::new();
         // Ground: a thick slab whose top face is z = 0.
         let ground = set.insert(ColliderBuilder::cuboid(80.0, 60.0, 1.0).translation(Vec3::new(0.0, 0.0, -1.0)));
-        let mut goals: [Vec<(ColliderHandle, Surface)>; 2] = [Vec::new(), Vec::new()];
+        let mut parts_of: [Vec<(ColliderHandle, Surface)>; 2] = [Vec::new(), Vec::new()];
         for (i, sign) in [-1.0f32, 1.0].into_iter().enumerate() {
             let line_x = sign * HALF_LENGTH;
             let post_y = GOAL_HALF_WIDTH + POST_RADIUS;
-            let parts = &mut goals[i];
+            let parts = &mut parts_of[i];
             for y in [-post_y, post_y] {
                 let h = set.insert(ColliderBuilder::capsule_z(POST_TOP / 2.0, POST_RADIUS).translation(Vec3::new(
                     line_x,
@@ -119,6 +128,16 @@ impl PitchColliders {
             );
             parts.push((roof, Surface::Net));
         }
+        let grow = Vec3::splat(BALL_RADIUS + 0.01);
+        let goals = parts_of.map(|parts| {
+            parts
+                .into_iter()
+                .map(|(h, surface)| {
+                    let aabb = set[h].compute_aabb();
+                    (h, surface, aabb.mins - grow, aabb.maxs + grow)
+                })
+                .collect()
+        });
         PitchColliders { set, ground, goals, ball: BallShape::new(BALL_RADIUS) }
     }
 
@@ -145,7 +164,11 @@ impl PitchColliders {
             if hi_x < gx0 || lo_x > gx1 {
                 continue;
             }
-            for &(handle, surface) in &self.goals[i] {
+            let (lo, hi) = (from.min(to), from.max(to));
+            for &(handle, surface, min, max) in &self.goals[i] {
+                if hi.cmplt(min).any() || lo.cmpgt(max).any() {
+                    continue;
+                }
                 if let Some(hit) = self.cast(handle, surface, from, velocity, dt)
                     && best.is_none_or(|b| hit.time < b.time)
                 {
@@ -158,6 +181,14 @@ impl PitchColliders {
 
     fn cast(&self, handle: ColliderHandle, surface: Surface, from: Vec3, velocity: Vec3, dt: f32) -> Option<Hit> {
         let collider = self.set.get(handle)?;
+        // Already touching (resting against the net, pressed to a post): answer from the closest
+        // point, in closed form. parry's cast would fall back to EPA here, which allocates.
+        let projection = collider.shape().project_point(collider.position(), from, false);
+        let away = from - projection.point;
+        if projection.is_inside || away.length_squared() <= (BALL_RADIUS + 1e-4) * (BALL_RADIUS + 1e-4) {
+            let normal = if projection.is_inside { -away } else { away }.normalize_or_zero();
+            return (normal != Vec3::ZERO).then_some(Hit { time: 0.0, normal, surface });
+        }
         let options = ShapeCastOptions {
             max_time_of_impact: dt,
             target_distance: 0.0,
@@ -174,17 +205,8 @@ impl PitchColliders {
             options,
         )
         .ok()??;
-        let normal = if hit.status == ShapeCastStatus::PenetratingOrWithinTargetDist {
-            // Already touching: push out along the line from the nearest surface point to the
-            // ball's centre (a closed-form projection; parry's penetration geometry allocates).
-            let projection = collider.shape().project_point(collider.position(), from, false);
-            let away = from - projection.point;
-            (if projection.is_inside { -away } else { away }).normalize_or_zero()
-        } else {
-            // normal1 is the ball's outward normal at the contact; the push-out normal is its
-            // opposite.
-            -hit.normal1
-        };
+        // normal1 is the ball's outward normal at the contact; the push-out normal is its opposite.
+        let normal = -hit.normal1;
         if !normal.is_finite() || normal.length_squared() < 0.5 {
             return None;
         }

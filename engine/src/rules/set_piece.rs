@@ -55,6 +55,7 @@ pub(crate) fn set_up(m: &mut Match, restart: Restart) {
     m.ball = Ball::at_rest(restart.spot);
     m.ball.position.z = BALL_RADIUS;
     m.owner = Some(taker);
+    m.carry_distance = 0.5;
     m.last_touch = Some(taker);
     m.taker = Some(taker);
     m.mode = restart.mode;

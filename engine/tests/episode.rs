@@ -201,3 +201,27 @@ fn builtin_ai_hands_the_player_to_the_ai_until_another_action() {
     assert_eq!(reward, 1.0, "after {steps} steps");
     assert_eq!(env.step_indices(&[19]), Err(EngineError::EpisodeOver));
 }
+
+#[test]
+fn an_agent_that_stalls_at_a_set_piece_is_made_to_play_it() {
+    // GRF's anti-stalling rule (grf.md §5.4): after 20 steps waiting, the agent's action becomes
+    // short_pass, so a throw-in that the agent's player takes is played at last.
+    let mut env = Env::new(common::scenario("11_vs_11_stochastic"), 2).unwrap();
+    env.game_mut().place_ball(
+        glam::Vec3::new(-20.0, -35.9, 0.11),
+        glam::Vec3::new(0.0, -5.0, 0.0),
+        Some((touchline_engine::Side::Right, 4)),
+    );
+    env.step(&[Action::Idle]).unwrap();
+    assert_eq!(env.info().game_mode, GameMode::ThrowIn);
+    let o = &env.observations()[0];
+    assert_eq!(o.ball_owned_team, 0);
+    assert_eq!(o.active, o.ball_owned_player, "our agent takes the throw-in");
+    let mut waited = 1;
+    while env.info().game_mode == GameMode::ThrowIn {
+        env.step(&[Action::Idle]).unwrap();
+        waited += 1;
+        assert!(waited <= 21, "still waiting after {waited} steps");
+    }
+    assert_eq!(waited, 21, "the throw-in is taken exactly when the rule forces a short pass");
+}

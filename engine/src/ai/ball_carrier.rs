@@ -8,7 +8,7 @@ use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::game::kick::shot_target;
 use crate::game::{Kick, KickKind, KickTarget};
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
-use crate::player::Player;
+use crate::player::{Player, nearest_distance};
 use crate::rng::MatchRng;
 
 /// Distance (m) from `p` to the segment `a`–`b`.
@@ -16,11 +16,6 @@ pub(crate) fn distance_to_segment(p: Vec2, a: Vec2, b: Vec2) -> f32 {
     let ab = b - a;
     let t = ((p - a).dot(ab) / ab.length_squared().max(1e-6)).clamp(0.0, 1.0);
     p.distance(a + ab * t)
-}
-
-/// Nearest active opponent's distance (m) to `at`.
-fn nearest(opponents: &[Player], at: Vec2) -> f32 {
-    opponents.iter().filter(|o| o.active).map(|o| o.position.distance_squared(at)).fold(f32::INFINITY, f32::min).sqrt()
 }
 
 /// Value of a shot from `from` (team frame) in [0, 1]-ish: distance, angle and bodies in the way.
@@ -56,7 +51,7 @@ pub(crate) fn plan(
     let opponents = view.team(side.opponent());
     let pos_t = frame.vec2(me.position);
     let goal_t = Vec2::new(HALF_LENGTH, 0.0);
-    let pressure = nearest(opponents, me.position);
+    let pressure = nearest_distance(opponents, me.position);
     let noise = difficulty.decision_noise;
 
     // Dribble: towards goal, bending away from opponents in front.
@@ -120,7 +115,7 @@ pub(crate) fn plan(
             .map(|o| distance_to_segment(frame.vec2(o.position), pos_t, m_t))
             .fold(f32::INFINITY, f32::min);
         let lane_ok = lane > 1.5 + 0.06 * d;
-        let open = nearest(opponents, mate.position).min(10.0) / 10.0;
+        let open = nearest_distance(opponents, mate.position).min(10.0) / 10.0;
         let progress = (m_t.x - pos_t.x) / 30.0;
         let closeness = 1.0 - m_t.distance(goal_t) / 110.0;
         let kind = if d < 25.0 && lane_ok {

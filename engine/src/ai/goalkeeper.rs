@@ -7,6 +7,7 @@ use glam::Vec2;
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::game::{Kick, KickKind, KickTarget};
 use crate::geometry::pitch::{GOAL_HALF_WIDTH, HALF_LENGTH, in_penalty_area};
+use crate::player::nearest_distance;
 
 /// Ticks a keeper holds the ball before distributing it.
 const HOLD_TICKS: u64 = 60;
@@ -72,11 +73,7 @@ pub fn distribute(view: &MatchView, g: usize, held_for: u64, analysis: &Analysis
         if !mate.active || mate.index == me.index {
             continue;
         }
-        let free = opponents
-            .iter()
-            .filter(|o| o.active)
-            .map(|o| o.position.distance(mate.position))
-            .fold(f32::INFINITY, f32::min);
+        let free = nearest_distance(opponents, mate.position);
         let d = mate.position.distance(ball);
         let value = free.min(15.0) - 0.05 * d;
         if value > best_value {

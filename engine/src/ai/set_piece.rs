@@ -6,7 +6,7 @@ use glam::Vec2;
 use super::{Analysis, Difficulty, MatchView, Plan, goalkeeper, team_shape};
 use crate::game::{GameMode, Kick, KickKind, KickTarget};
 use crate::geometry::pitch::HALF_LENGTH;
-use crate::player::WALK_SPEED;
+use crate::player::{WALK_SPEED, nearest_distance};
 use crate::rng::MatchRng;
 
 /// Plan for player `g` while a set piece is pending.
@@ -62,11 +62,7 @@ fn take(view: &MatchView, g: usize, analysis: &Analysis, rng: &mut MatchRng) -> 
                 .iter()
                 .filter(|m| m.active && m.index != me.index && !m.is_keeper())
                 .map(|m| {
-                    let free = opponents
-                        .iter()
-                        .filter(|o| o.active)
-                        .map(|o| o.position.distance(m.position))
-                        .fold(f32::INFINITY, f32::min);
+                    let free = nearest_distance(opponents, m.position);
                     let d = m.position.distance(me.position);
                     (m.position, free.min(10.0) - 0.15 * d)
                 })

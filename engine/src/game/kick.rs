@@ -7,7 +7,7 @@ use glam::{Vec2, Vec3};
 use super::input::{Kick, KickKind};
 use crate::geometry::pitch::{BALL_RADIUS, GOAL_HALF_WIDTH, GRAVITY, HALF_LENGTH};
 use crate::physics::{BALL_DRAG, Ball, ROLL_DECELERATION, ROLL_VISCOUS};
-use crate::player::Player;
+use crate::player::{Player, nearest_distance};
 use crate::rng::MatchRng;
 
 /// Speed (m/s) a ground pass should still have when it reaches the receiver.
@@ -158,12 +158,7 @@ pub(crate) fn auto_target(
         } else {
             0.0
         };
-        let marked = opponents
-            .iter()
-            .filter(|o| o.active)
-            .map(|o| o.position.distance_squared(mate.position))
-            .fold(f32::INFINITY, f32::min)
-            .sqrt();
+        let marked = nearest_distance(opponents, mate.position);
         let score = 2.0 * cos - length_penalty + 0.05 * marked.min(8.0);
         if score > best_score {
             best_score = score;

@@ -4,5 +4,5 @@
 mod player;
 mod role;
 
-pub use player::{DRIBBLE_SPEED, Player, SPRINT_SPEED, WALK_SPEED, top_speed};
+pub use player::{DRIBBLE_SPEED, Player, SPRINT_SPEED, WALK_SPEED, nearest_distance, top_speed};
 pub use role::Role;

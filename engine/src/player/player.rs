@@ -103,3 +103,8 @@ impl Player {
 pub fn top_speed(stat: f32) -> f32 {
     SPRINT_SPEED * (0.9 + 0.1 * stat.clamp(0.0, 1.0))
 }
+
+/// Distance (m) from `at` to the nearest active player of `players` (infinite when none).
+pub fn nearest_distance(players: &[Player], at: Vec2) -> f32 {
+    players.iter().filter(|p| p.active).map(|p| p.position.distance_squared(at)).fold(f32::INFINITY, f32::min).sqrt()
+}

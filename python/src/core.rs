@@ -1,0 +1,245 @@
+//! What `Env` and `VectorEnv` share: an engine `Env` plus its observation encoder and frame
+//! stacks, with every buffer allocated once.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use touchline_engine::obs::{FrameStack, encode_simple115, encode_simple115v2, encode_smm};
+use touchline_engine::{ActionSet, EngineError, Env, EnvConfig, Scenario, StepOutcome};
+
+/// Frames kept by `stacked=True` (GRF's FrameStack(4), grf.md §4.4).
+const STACK: usize = 4;
+
+/// How observations are encoded (grf.md §4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Representation {
+    /// GRF's dict of arrays (no array encoding).
+    Raw,
+    /// float32 (115,), legacy padding.
+    Simple115,
+    /// float32 (115,), fixed positions.
+    Simple115v2,
+    /// uint8 (H, W, 4) Super Mini Map.
+    Smm { width: usize, height: usize },
+}
+
+impl Representation {
+    pub(crate) fn parse(name: &str, channel_dimensions: (usize, usize)) -> PyResult<Representation> {
+        let (width, height) = channel_dimensions;
+        match name {
+            "raw" => Ok(Representation::Raw),
+            "simple115" => Ok(Representation::Simple115),
+            "simple115v2" => Ok(Representation::Simple115v2),
+            "extracted" | "smm" => {
+                if width == 0 || height == 0 || width > 4096 || height > 4096 {
+                    return Err(PyValueError::new_err(format!(
+                        "channel_dimensions must be (width, height) between 1 and 4096, got ({width}, {height})"
+                    )));
+                }
+                Ok(Representation::Smm { width, height })
+            }
+            "pixels" | "pixels_gray" => Err(PyValueError::new_err(format!(
+                "representation {name:?} needs the renderer, which is not in touchline yet; use \"extracted\" (SMM) or \"simple115v2\""
+            ))),
+            other => Err(PyValueError::new_err(format!(
+                "unknown representation {other:?}: expected \"raw\", \"simple115\", \"simple115v2\" or \"extracted\""
+            ))),
+        }
+    }
+
+    /// One frame's shape and its last-axis size (channels).
+    fn frame(self) -> (Vec<usize>, usize) {
+        match self {
+            Representation::Raw => (Vec::new(), 0),
+            Representation::Simple115 | Representation::Simple115v2 => (vec![115], 115),
+            Representation::Smm { width, height } => (vec![height, width, 4], 4),
+        }
+    }
+}
+
+/// Constructor arguments shared by `Env` and `VectorEnv`.
+#[derive(Clone, Debug)]
+pub(crate) struct EnvArgs {
+    pub(crate) scenario: Scenario,
+    pub(crate) representation: Representation,
+    pub(crate) config: EnvConfig,
+    pub(crate) stacked: bool,
+}
+
+impl EnvArgs {
+    #[expect(clippy::too_many_arguments, reason = "mirrors the Python keyword arguments one to one")]
+    pub(crate) fn parse(
+        py: Python<'_>,
+        scenario: &str,
+        representation: &str,
+        left_agents: usize,
+        right_agents: usize,
+        rewards: &str,
+        action_set: &str,
+        stacked: bool,
+        channel_dimensions: (usize, usize),
+    ) -> PyResult<EnvArgs> {
+        let scenario = touchline_dsl::load(scenario).map_err(|e| crate::errors::scenario_error(py, &e))?;
+        let representation = Representation::parse(representation, channel_dimensions)?;
+        let mut checkpoints = false;
+        let mut scoring = false;
+        for term in rewards.split(',').map(str::trim).filter(|t| !t.is_empty()) {
+            match term {
+                "scoring" => scoring = true,
+                "checkpoints" => checkpoints = true,
+                other => {
+                    return Err(PyValueError::new_err(format!(
+                        "unknown reward {other:?}: expected \"scoring\" or \"scoring,checkpoints\""
+                    )));
+                }
+            }
+        }
+        if !scoring {
+            return Err(PyValueError::new_err("rewards must include \"scoring\" (as in GRF)"));
+        }
+        let action_set = match action_set {
+            "default" => ActionSet::Default,
+            "v2" => ActionSet::V2,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "unknown action_set {other:?}: expected \"default\" or \"v2\""
+                )));
+            }
+        };
+        if representation == Representation::Raw && stacked {
+            return Err(PyValueError::new_err("stacked=True needs an array representation, not \"raw\""));
+        }
+        Ok(EnvArgs {
+            scenario,
+            representation,
+            config: EnvConfig { left_agents, right_agents, action_set, checkpoints },
+            stacked,
+        })
+    }
+}
+
+/// Observation output buffers.
+pub(crate) enum ObsOut<'a> {
+    F32(&'a mut [f32]),
+    U8(&'a mut [u8]),
+}
+
+/// An engine env with its encoder.
+pub(crate) struct EnvCore {
+    pub(crate) env: Env,
+    pub(crate) representation: Representation,
+    stacked: bool,
+    frame_len: usize,
+    stacks_f32: Vec<FrameStack<f32>>,
+    stacks_u8: Vec<FrameStack<u8>>,
+    frame_u8: Vec<u8>,
+}
+
+impl EnvCore {
+    pub(crate) fn new(args: &EnvArgs, seed: u64) -> Result<EnvCore, EngineError> {
+        let env = Env::with_config(args.scenario.clone(), args.config, seed)?;
+        let (shape, channels) = args.representation.frame();
+        let frame_len: usize = if shape.is_empty() { 0 } else { shape.iter().product() };
+        let m = env.num_controllers();
+        let (stacks_f32, stacks_u8) = match (args.stacked, args.representation) {
+            (false, _) | (_, Representation::Raw) => (Vec::new(), Vec::new()),
+            (true, Representation::Smm { .. }) => {
+                (Vec::new(), (0..m).map(|_| FrameStack::new(frame_len, channels, STACK)).collect())
+            }
+            (true, _) => ((0..m).map(|_| FrameStack::new(frame_len, channels, STACK)).collect(), Vec::new()),
+        };
+        Ok(EnvCore {
+            env,
+            representation: args.representation,
+            stacked: args.stacked,
+            frame_len,
+            stacks_f32,
+            stacks_u8,
+            frame_u8: vec![0; frame_len],
+        })
+    }
+
+    /// Shape of one controller's observation (stacking included).
+    pub(crate) fn observation_shape(&self) -> Vec<usize> {
+        let (mut shape, _) = self.representation.frame();
+        if self.stacked
+            && let Some(last) = shape.last_mut()
+        {
+            *last *= STACK;
+        }
+        shape
+    }
+
+    /// Elements of one controller's observation.
+    pub(crate) fn observation_len(&self) -> usize {
+        if self.stacked { self.frame_len * STACK } else { self.frame_len }
+    }
+
+    pub(crate) fn dtype(&self) -> &'static str {
+        match self.representation {
+            Representation::Raw => "raw",
+            Representation::Smm { .. } => "uint8",
+            _ => "float32",
+        }
+    }
+
+    pub(crate) fn reset(&mut self, seed: Option<u64>) {
+        match seed {
+            Some(s) => self.env.reset_with_seed(s),
+            None => self.env.reset(),
+        }
+    }
+
+    pub(crate) fn step(&mut self, actions: &[u32]) -> Result<StepOutcome, EngineError> {
+        self.env.step_indices(actions)
+    }
+
+    /// Encodes every controller's observation into `out` (M × observation_len). `fresh` means
+    /// the first observation of an episode: stacks are refilled with it.
+    pub(crate) fn write_observations(&mut self, out: ObsOut<'_>, fresh: bool) {
+        let len = self.observation_len();
+        match (self.representation, out) {
+            (Representation::Raw, _) => {}
+            (Representation::Smm { width, height }, ObsOut::U8(out)) => {
+                for (i, obs) in self.env.observations().iter().enumerate() {
+                    let dst = &mut out[i * len..(i + 1) * len];
+                    if self.stacked {
+                        encode_smm(obs, width, height, &mut self.frame_u8);
+                        let stack = &mut self.stacks_u8[i];
+                        if fresh {
+                            stack.reset(&self.frame_u8);
+                        } else {
+                            stack.push(&self.frame_u8);
+                        }
+                        stack.write_stacked(dst);
+                    } else {
+                        encode_smm(obs, width, height, dst);
+                    }
+                }
+            }
+            (repr, ObsOut::F32(out)) => {
+                let mut frame = [0.0f32; 115];
+                for (i, obs) in self.env.observations().iter().enumerate() {
+                    if repr == Representation::Simple115 {
+                        encode_simple115(obs, &mut frame);
+                    } else {
+                        encode_simple115v2(obs, &mut frame);
+                    }
+                    let dst = &mut out[i * len..(i + 1) * len];
+                    if self.stacked {
+                        let stack = &mut self.stacks_f32[i];
+                        if fresh {
+                            stack.reset(&frame);
+                        } else {
+                            stack.push(&frame);
+                        }
+                        stack.write_stacked(dst);
+                    } else {
+                        dst.copy_from_slice(&frame);
+                    }
+                }
+            }
+            // The callers allocate the buffer from `dtype()`, so the kinds always match.
+            (_, _) => {}
+        }
+    }
+}

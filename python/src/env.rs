@@ -1,0 +1,188 @@
+//! `touchline._touchline.Env`: one match for Python.
+
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyTuple};
+use touchline_engine::{Side, StepInfo};
+
+use crate::convert::raw_to_dict;
+use crate::core::{EnvArgs, EnvCore, ObsOut};
+use crate::errors::{engine_error, guard};
+
+/// What `Env.step` returns: (observation, rewards, terminated, truncated, info).
+type StepResult<'py> = (Bound<'py, PyAny>, Bound<'py, PyArray1<f32>>, bool, bool, Bound<'py, PyDict>);
+
+/// One match: the Rust `Env` plus an observation encoder (see `_touchline.pyi`).
+#[pyclass(module = "touchline._touchline", name = "Env", unsendable)]
+pub(crate) struct PyEnv {
+    core: EnvCore,
+    actions: Vec<u32>,
+}
+
+/// Reads one action index per controller from an int, a sequence or a numpy array.
+pub(crate) fn read_actions(actions: &Bound<'_, PyAny>, expected: usize, out: &mut Vec<u32>) -> PyResult<()> {
+    out.clear();
+    if let Ok(a) = actions.extract::<i64>() {
+        out.push(u32::try_from(a).map_err(|_| PyValueError::new_err(format!("action {a} is negative or too large")))?);
+    } else {
+        let values: Vec<i64> = actions.extract().map_err(|_| {
+            PyValueError::new_err("actions must be an int or a sequence / 1-D array of ints, one per controlled player")
+        })?;
+        for a in values {
+            out.push(
+                u32::try_from(a).map_err(|_| PyValueError::new_err(format!("action {a} is negative or too large")))?,
+            );
+        }
+    }
+    if out.len() != expected {
+        return Err(PyValueError::new_err(format!(
+            "expected {expected} actions (one per controlled player), got {}",
+            out.len()
+        )));
+    }
+    Ok(())
+}
+
+pub(crate) fn info_dict<'py>(py: Python<'py>, info: &StepInfo) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("score", vec![info.score[0], info.score[1]])?;
+    d.set_item("steps_left", info.steps_left)?;
+    d.set_item("game_mode", info.game_mode as u8)?;
+    d.set_item("score_reward", info.score_reward)?;
+    d.set_item("checkpoint_reward", info.checkpoint_reward)?;
+    d.set_item("steps", info.steps)?;
+    d.set_item("episode", info.episode)?;
+    Ok(d)
+}
+
+impl PyEnv {
+    fn observation<'py>(&mut self, py: Python<'py>, fresh: bool) -> PyResult<Bound<'py, PyAny>> {
+        let m = self.core.env.num_controllers();
+        let mut shape = vec![m];
+        shape.extend(self.core.observation_shape());
+        let len = m * self.core.observation_len();
+        match self.core.dtype() {
+            "raw" => self.raw_observations(py).map(Bound::into_any),
+            "uint8" => {
+                let mut buf = vec![0u8; len];
+                self.core.write_observations(ObsOut::U8(&mut buf), fresh);
+                Ok(PyArray1::from_vec(py, buf).reshape(shape)?.into_any())
+            }
+            _ => {
+                let mut buf = vec![0.0f32; len];
+                self.core.write_observations(ObsOut::F32(&mut buf), fresh);
+                Ok(PyArray1::from_vec(py, buf).reshape(shape)?.into_any())
+            }
+        }
+    }
+}
+
+#[pymethods]
+impl PyEnv {
+    #[new]
+    #[pyo3(signature = (scenario, *, representation = "simple115v2", left_agents = 1, right_agents = 0, rewards = "scoring", action_set = "default", seed = 0, stacked = false, channel_dimensions = (96, 72)))]
+    #[expect(clippy::too_many_arguments, reason = "Python keyword arguments")]
+    fn new(
+        py: Python<'_>,
+        scenario: &str,
+        representation: &str,
+        left_agents: usize,
+        right_agents: usize,
+        rewards: &str,
+        action_set: &str,
+        seed: u64,
+        stacked: bool,
+        channel_dimensions: (usize, usize),
+    ) -> PyResult<PyEnv> {
+        guard(|| {
+            let args = EnvArgs::parse(
+                py,
+                scenario,
+                representation,
+                left_agents,
+                right_agents,
+                rewards,
+                action_set,
+                stacked,
+                channel_dimensions,
+            )?;
+            let core = EnvCore::new(&args, seed).map_err(engine_error)?;
+            Ok(PyEnv { core, actions: Vec::new() })
+        })
+    }
+
+    #[getter]
+    fn num_controllers(&self) -> usize {
+        self.core.env.num_controllers()
+    }
+
+    #[getter]
+    fn action_count(&self) -> usize {
+        self.core.env.action_set().len()
+    }
+
+    #[getter]
+    fn observation_shape<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        PyTuple::new(py, self.core.observation_shape())
+    }
+
+    #[getter]
+    fn observation_dtype(&self) -> &'static str {
+        self.core.dtype()
+    }
+
+    #[getter]
+    fn controller_sides(&self) -> Vec<&'static str> {
+        self.core.env.controller_sides().map(Side::name).collect()
+    }
+
+    #[getter]
+    fn scenario_name(&self) -> String {
+        self.core.env.scenario().name.clone()
+    }
+
+    #[getter]
+    fn game_duration(&self) -> u32 {
+        self.core.env.scenario().game_duration
+    }
+
+    #[pyo3(signature = (seed = None))]
+    fn reset<'py>(&mut self, py: Python<'py>, seed: Option<u64>) -> PyResult<Bound<'py, PyAny>> {
+        guard(|| {
+            self.core.reset(seed);
+            self.observation(py, true)
+        })
+    }
+
+    fn step<'py>(&mut self, py: Python<'py>, actions: &Bound<'py, PyAny>) -> PyResult<StepResult<'py>> {
+        guard(|| {
+            let mut buf = std::mem::take(&mut self.actions);
+            let read = read_actions(actions, self.core.env.num_controllers(), &mut buf);
+            let outcome = read.and_then(|()| self.core.step(&buf).map_err(engine_error));
+            self.actions = buf;
+            let outcome = outcome?;
+            let obs = self.observation(py, false)?;
+            let rewards = PyArray1::from_slice(py, self.core.env.rewards());
+            let info = info_dict(py, self.core.env.info())?;
+            Ok((obs, rewards, outcome.terminated, outcome.truncated, info))
+        })
+    }
+
+    fn raw_observations<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        guard(|| {
+            let dicts =
+                self.core.env.observations().iter().map(|o| raw_to_dict(py, o)).collect::<PyResult<Vec<_>>>()?;
+            PyList::new(py, dicts)
+        })
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Env(scenario={:?}, representation={:?}, controllers={})",
+            self.core.env.scenario().name,
+            self.core.representation,
+            self.core.env.num_controllers()
+        )
+    }
+}

@@ -1,0 +1,59 @@
+//! The Python exception tree and the mapping of Rust errors onto it. Nothing panics across the
+//! boundary: [`guard`] turns a panic into a `RuntimeError`.
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use touchline_dsl::LoadError;
+use touchline_engine::EngineError;
+
+pyo3::create_exception!(
+    _touchline,
+    TouchlineError,
+    pyo3::exceptions::PyException,
+    "Base class of every error raised by touchline."
+);
+pyo3::create_exception!(
+    _touchline,
+    ScenarioError,
+    TouchlineError,
+    "A scenario could not be loaded; the message is the rendered diagnostic."
+);
+
+/// A scenario that failed to load: `ScenarioError` with the plain rendered diagnostic as its
+/// message and the stable code (`tl::E001`, …) as its `code` attribute.
+pub(crate) fn scenario_error(py: Python<'_>, err: &LoadError) -> PyErr {
+    let message = touchline_dsl::render_plain(err);
+    let exc = ScenarioError::new_err(message);
+    let code = err.code_str().to_string();
+    if let Err(e) = exc.value(py).setattr("code", code) {
+        return e;
+    }
+    exc
+}
+
+/// Engine errors: bad input is a `ValueError`, stepping a finished episode a `RuntimeError`, an
+/// invalid scenario a `ScenarioError`.
+pub(crate) fn engine_error(err: EngineError) -> PyErr {
+    match err {
+        EngineError::EpisodeOver => PyRuntimeError::new_err(err.to_string()),
+        EngineError::InvalidScenario { .. } => ScenarioError::new_err(err.to_string()),
+        _ => PyValueError::new_err(err.to_string()),
+    }
+}
+
+/// Runs `f`, turning a Rust panic into a Python `RuntimeError` instead of unwinding into Python.
+pub(crate) fn guard<T>(f: impl FnOnce() -> PyResult<T>) -> PyResult<T> {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(result) => result,
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            Err(PyRuntimeError::new_err(format!("touchline internal error (please report): {what}")))
+        }
+    }
+}

@@ -1,0 +1,147 @@
+"""Type stubs for the compiled extension `touchline._touchline` (Rust, pyo3).
+
+Checked against the built module by `python -m mypy.stubtest touchline._touchline`.
+"""
+
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+class TouchlineError(Exception):
+    """Base class of every error raised by touchline."""
+
+class ScenarioError(TouchlineError):
+    """A scenario could not be loaded; the message is the rendered diagnostic."""
+
+    code: str
+
+def scenario_names() -> list[str]:
+    """Names of the stdlib scenarios, sorted."""
+
+def scenario_json(scenario: str) -> str:
+    """The compiled JSON of a scenario given as a stdlib name or a `.json` path.
+
+    Raises:
+        ScenarioError: unknown name, unreadable file or invalid scenario.
+    """
+
+class Env:
+    """One match: the Rust `Env` plus an observation encoder.
+
+    Observations always have a leading controller axis `M` (left controllers first); rewards
+    are float32 `(M,)`.
+
+    Args:
+        scenario: stdlib name, or path to a compiled `.json` scenario.
+        representation: "raw", "simple115", "simple115v2" or "extracted" (SMM).
+        left_agents / right_agents: players the agents control on each side.
+        rewards: "scoring" or "scoring,checkpoints".
+        action_set: "default" (19 actions) or "v2" (20, adds builtin_ai).
+        seed: seed of the first episode.
+        stacked: stack the last 4 observations along the last axis.
+        channel_dimensions: (width, height) of SMM observations.
+
+    Raises:
+        ScenarioError: the scenario cannot be loaded.
+        ValueError: bad arguments (unknown representation, too many agents, ...).
+    """
+
+    def __init__(
+        self,
+        scenario: str,
+        *,
+        representation: str = "simple115v2",
+        left_agents: int = 1,
+        right_agents: int = 0,
+        rewards: str = "scoring",
+        action_set: str = "default",
+        seed: int = 0,
+        stacked: bool = False,
+        channel_dimensions: tuple[int, int] = (96, 72),
+    ) -> None: ...
+    @property
+    def num_controllers(self) -> int: ...
+    @property
+    def action_count(self) -> int: ...
+    @property
+    def observation_shape(self) -> tuple[int, ...]:
+        """Shape of one controller's observation ((115,), (72, 96, 4), ... ; () for raw)."""
+    @property
+    def observation_dtype(self) -> str:
+        """"float32", "uint8" or "raw"."""
+    @property
+    def controller_sides(self) -> list[str]:
+        """"left" or "right" for each controller."""
+    @property
+    def scenario_name(self) -> str: ...
+    @property
+    def game_duration(self) -> int: ...
+    def reset(self, seed: int | None = None) -> Any:
+        """Starts an episode; returns the observation (array (M, *shape) or, for raw, a list of dicts)."""
+    def step(self, actions: npt.ArrayLike) -> tuple[Any, npt.NDArray[np.float32], bool, bool, dict[str, Any]]:
+        """One step with one action index per controller.
+
+        Returns:
+            (observation, rewards (M,) float32, terminated, truncated, info) where info has
+            score [left, right], steps_left, game_mode, score_reward, checkpoint_reward, steps, episode.
+
+        Raises:
+            ValueError: wrong number of actions or an index outside the action set.
+            RuntimeError: stepping after the episode ended (call reset).
+        """
+    def raw_observations(self) -> list[dict[str, Any]]:
+        """The raw observation of each controller (GRF's dict of numpy arrays, grf.md §3.1)."""
+
+class VectorEnv:
+    """`num_envs` independent matches stepped in Rust threads with the GIL released.
+
+    Same arguments as `Env`, plus `num_envs` and `num_threads` (0 = one per core). Episodes reset
+    automatically in the same step in which they end; seeds are `seed + i` for env i.
+    """
+
+    def __init__(
+        self,
+        scenario: str,
+        num_envs: int,
+        *,
+        num_threads: int = 0,
+        representation: str = "simple115v2",
+        left_agents: int = 1,
+        right_agents: int = 0,
+        rewards: str = "scoring",
+        action_set: str = "default",
+        seed: int = 0,
+        stacked: bool = False,
+        channel_dimensions: tuple[int, int] = (96, 72),
+    ) -> None: ...
+    @property
+    def num_envs(self) -> int: ...
+    @property
+    def num_controllers(self) -> int: ...
+    @property
+    def action_count(self) -> int: ...
+    @property
+    def observation_shape(self) -> tuple[int, ...]: ...
+    @property
+    def observation_dtype(self) -> str: ...
+    def reset(self, observations: npt.NDArray[Any], seed: int | None = None) -> None:
+        """Resets every env, writing observations into `observations` (num_envs, M, *shape)."""
+    def step(
+        self,
+        actions: npt.NDArray[np.int64],
+        observations: npt.NDArray[Any],
+        rewards: npt.NDArray[np.float32],
+        terminated: npt.NDArray[np.bool_],
+        truncated: npt.NDArray[np.bool_],
+    ) -> None:
+        """Steps every env with `actions` (num_envs, M) and writes the results into the given
+        preallocated arrays without copies: observations (num_envs, M, *shape), rewards
+        (num_envs, M), terminated and truncated (num_envs,). Envs that end are reset at once and
+        their new first observation is written.
+
+        Raises:
+            ValueError: a wrong shape or dtype, or an action outside the action set.
+        """

@@ -3,10 +3,13 @@
 Checked against the built module by `python -m mypy.stubtest touchline._touchline`.
 """
 
-from typing import Any
+from typing import Any, final
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import Self
+
+__all__ = ["Env", "ScenarioError", "TouchlineError", "VectorEnv", "__version__", "scenario_json", "scenario_names"]
 
 __version__: str
 
@@ -28,6 +31,7 @@ def scenario_json(scenario: str) -> str:
         ScenarioError: unknown name, unreadable file or invalid scenario.
     """
 
+@final
 class Env:
     """One match: the Rust `Env` plus an observation encoder.
 
@@ -49,8 +53,8 @@ class Env:
         ValueError: bad arguments (unknown representation, too many agents, ...).
     """
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         scenario: str,
         *,
         representation: str = "simple115v2",
@@ -60,8 +64,8 @@ class Env:
         action_set: str = "default",
         seed: int = 0,
         stacked: bool = False,
-        channel_dimensions: tuple[int, int] = (96, 72),
-    ) -> None: ...
+        channel_dimensions: tuple[int, int] = ...,
+    ) -> Self: ...
     @property
     def num_controllers(self) -> int: ...
     @property
@@ -95,6 +99,7 @@ class Env:
     def raw_observations(self) -> list[dict[str, Any]]:
         """The raw observation of each controller (GRF's dict of numpy arrays, grf.md §3.1)."""
 
+@final
 class VectorEnv:
     """`num_envs` independent matches stepped in Rust threads with the GIL released.
 
@@ -102,8 +107,8 @@ class VectorEnv:
     automatically in the same step in which they end; seeds are `seed + i` for env i.
     """
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         scenario: str,
         num_envs: int,
         *,
@@ -115,8 +120,8 @@ class VectorEnv:
         action_set: str = "default",
         seed: int = 0,
         stacked: bool = False,
-        channel_dimensions: tuple[int, int] = (96, 72),
-    ) -> None: ...
+        channel_dimensions: tuple[int, int] = ...,
+    ) -> Self: ...
     @property
     def num_envs(self) -> int: ...
     @property

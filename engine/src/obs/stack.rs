@@ -93,14 +93,29 @@ impl<T: Copy + Default> FrameStack<T> {
         if out.len() != self.stacked_len() || out.is_empty() {
             return;
         }
-        let c = self.channels;
-        for (p, dst) in out.chunks_exact_mut(self.k * c).enumerate() {
-            for (j, dst) in dst.chunks_exact_mut(c).enumerate() {
-                let slot = (self.oldest + j) % self.k;
-                let src = slot * self.frame_len + p * c;
-                dst.copy_from_slice(&self.frames[src..src + c]);
+        let (k, c) = (self.k, self.channels);
+        for j in 0..k {
+            let slot = (self.oldest + j) % k;
+            let frame = &self.frames[slot * self.frame_len..(slot + 1) * self.frame_len];
+            // Constant channel counts let the per-pixel copy inline (SMM 4, pixels 3, gray 1).
+            match c {
+                1 => interleave::<T, 1>(frame, out, k, j),
+                3 => interleave::<T, 3>(frame, out, k, j),
+                4 => interleave::<T, 4>(frame, out, k, j),
+                _ => {
+                    for (dst, src) in out.chunks_exact_mut(k * c).zip(frame.chunks_exact(c)) {
+                        dst[j * c..(j + 1) * c].copy_from_slice(src);
+                    }
+                }
             }
         }
+    }
+}
+
+/// Copies each `C`-channel pixel of `frame` into age slot `j` of the matching `k·C` pixel of `out`.
+fn interleave<T: Copy, const C: usize>(frame: &[T], out: &mut [T], k: usize, j: usize) {
+    for (dst, src) in out.chunks_exact_mut(k * C).zip(frame.as_chunks::<C>().0) {
+        dst[j * C..(j + 1) * C].copy_from_slice(src);
     }
 }
 
@@ -149,6 +164,28 @@ mod tests {
         }
         // Frames t = 2..=5 remain; per pixel [t-3, t-2, t-1, t] × 2 channels.
         assert_eq!(stacked(&s), [20, 21, 30, 31, 40, 41, 50, 51, 22, 23, 32, 33, 42, 43, 52, 53]);
+    }
+
+    #[test]
+    fn every_channel_count_matches_the_definition() {
+        // 3 pixels, c channels; frame t holds 100 t + c p + ch; 6 frames pushed after the reset.
+        for c in 1..=6 {
+            let frame = |t: usize| (0..3 * c).map(|i| (100 * t + i) as u32).collect::<Vec<_>>();
+            let mut s = FrameStack::<u32>::new(3 * c, c, 4);
+            s.reset(&frame(0));
+            for t in 1..=6 {
+                s.push(&frame(t));
+                let out = stacked(&s);
+                for p in 0..3 {
+                    for j in 0..4 {
+                        let age_t = (t + j).saturating_sub(3);
+                        for ch in 0..c {
+                            assert_eq!(out[(p * 4 + j) * c + ch], (100 * age_t + c * p + ch) as u32, "c {c} t {t}");
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]

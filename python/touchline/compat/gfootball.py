@@ -1,0 +1,248 @@
+"""GRF's `gfootball.env.create_environment`, for code written against Google Research Football.
+
+```python
+from touchline.compat.gfootball import create_environment  # was: from gfootball.env import ...
+env = create_environment(env_name="academy_empty_goal_close", representation="simple115v2")
+obs = env.reset()
+obs, reward, done, info = env.step(env.action_space.sample())
+```
+
+The returned env speaks the old gym API that GRF pins (gym 0.21): `reset()` returns the observation
+only and `step(action)` returns `(observation, reward, done, info)`, `done` being terminated or
+truncated. Observations are shaped as in GRF (grf.md §4, §8.2): one controlled player gives
+`(115,)` or `(72, 96, 4)`, M players add a leading axis of size M, and `raw` is always a list of M
+dicts. The reward is a float for one player and a float32 array (M,) for several.
+
+Not available yet (a `ValueError` says so when asked for): rendering (`render=True`, `pixels`,
+`pixels_gray`), dumps and videos (`write_goal_dumps`, `write_full_episode_dumps`, `write_video`),
+`extra_players`, `action_set="full"`, and `get_state`/`set_state`. GRF's `control_all_players`
+reduction (`MultiAgentToSingleAgent`) is not applied: in such a scenario the env returns every
+controllable player.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from gymnasium import spaces
+
+from .. import _arguments
+from .._touchline import Env as _CoreEnv
+
+__all__ = ["FootballEnv", "create_environment"]
+
+#: `other_config_options` keys that change nothing here (video, display, wall-clock pacing).
+_COSMETIC_OPTIONS = frozenset(
+    {
+        "custom_display_stats",
+        "display_game_stats",
+        "real_time",
+        "render_resolution_x",
+        "render_resolution_y",
+        "tracesdir",
+        "video_format",
+        "video_quality_level",
+    }
+)
+#: `other_config_options` keys honoured as flags that must stay off (dumps and video).
+_OFF_OPTIONS = frozenset({"dump_full_episodes", "dump_scores", "write_video", "render"})
+#: GRF's seed when the user gives none is random per episode; these keys set it.
+_SEED_OPTION = "game_engine_random_seed"
+
+
+class FootballEnv:
+    """What `create_environment` returns: one match behind GRF's old gym API.
+
+    Attributes:
+        observation_space: a Gymnasium `Box` shaped like the observations (`None` for `raw`,
+            whose list of dicts has no Box, as in GRF).
+        action_space: `Discrete(19)` for one player, `MultiDiscrete([19] * M)` for M players.
+    """
+
+    metadata: dict[str, Any] = {"render.modes": []}
+    reward_range = (-float("inf"), float("inf"))
+    spec = None
+
+    def __init__(self, core: _CoreEnv, representation: str) -> None:
+        self._core = core
+        self._representation = representation
+        self._count: int = core.num_controllers
+        self._single = self._count == 1 and representation != "raw"
+        self._action_count: int = core.action_count
+        self._actions = np.zeros(self._count, dtype=np.int64)
+        self._next_seed: int | None = None
+        self.observation_space: spaces.Space[Any] | None
+        if representation == "raw":
+            self.observation_space = None
+        else:
+            shape = tuple(core.observation_shape)
+            self.observation_space = _arguments.observation_box(
+                shape if self._single else (self._count, *shape), core.observation_dtype
+            )
+        self.action_space: spaces.Space[Any] = (
+            spaces.Discrete(self._action_count)
+            if self._count == 1
+            else spaces.MultiDiscrete([self._action_count] * self._count)
+        )
+
+    @property
+    def unwrapped(self) -> FootballEnv:
+        """This env (GRF's wrappers are folded into it)."""
+        return self
+
+    def seed(self, seed: int | None = None) -> list[int]:
+        """Old gym's seeding: the next `reset()` starts episode 0 of `seed`."""
+        self._next_seed = _arguments.seed_argument(seed)
+        return [self._next_seed]
+
+    def reset(self) -> Any:
+        """Starts the next episode and returns its first observation."""
+        if self._next_seed is not None:
+            observation = self._core.reset(self._next_seed)
+            self._next_seed = None
+        else:
+            observation = self._core.reset()
+        return self._shape(observation)
+
+    def step(self, action: Any) -> tuple[Any, Any, bool, dict[str, Any]]:
+        """One step; returns `(observation, reward, done, info)`.
+
+        Accepts an integer (one player) or a list/array of M integers, left players first.
+
+        Raises:
+            ValueError: a wrong number of actions or an index outside the action set.
+            RuntimeError: the episode is done; call `reset()`.
+        """
+        _arguments.write_actions(action, self._actions, self._action_count)
+        observation, rewards, terminated, truncated, info = self._core.step(self._actions)
+        reward: Any = float(rewards[0]) if self._count == 1 else rewards
+        return self._shape(observation), reward, bool(terminated or truncated), info
+
+    def observation(self) -> list[dict[str, Any]]:
+        """GRF's `env.unwrapped.observation()`: the raw observation of each controlled player."""
+        return self._core.raw_observations()
+
+    def render(self, mode: str = "human") -> None:
+        """Rendering is not available yet."""
+        raise ValueError(
+            "rendering is not available yet in touchline (GRF's render, pixels and videos)"
+        )
+
+    def close(self) -> None:
+        """Nothing to release."""
+
+    def get_state(self, to_pickle: Any = None) -> Any:
+        """Not available yet: touchline cannot snapshot a match."""
+        raise NotImplementedError("get_state/set_state are not available in touchline yet")
+
+    def set_state(self, state: Any) -> Any:
+        """Not available yet: touchline cannot snapshot a match."""
+        raise NotImplementedError("get_state/set_state are not available in touchline yet")
+
+    def _shape(self, observation: Any) -> Any:
+        if self._single:
+            return observation[0]
+        return observation
+
+    def __repr__(self) -> str:
+        return (
+            f"<touchline.compat.gfootball.FootballEnv {self._core.scenario_name} "
+            f"{self._representation} x{self._count}>"
+        )
+
+
+def create_environment(
+    env_name: str = "",
+    stacked: bool = False,
+    representation: str = "extracted",
+    rewards: str = "scoring",
+    write_goal_dumps: bool = False,
+    write_full_episode_dumps: bool = False,
+    render: bool = False,
+    write_video: bool = False,
+    dump_frequency: int = 1,
+    logdir: str = "",
+    extra_players: list[str] | None = None,
+    number_of_left_players_agent_controls: int = 1,
+    number_of_right_players_agent_controls: int = 0,
+    channel_dimensions: tuple[int, int] = (96, 72),
+    other_config_options: dict[str, Any] | None = None,
+) -> FootballEnv:
+    """GRF's `create_environment` (grf.md §1.1), with the same arguments and defaults.
+
+    Args:
+        env_name: a stdlib scenario name (GRF's scenario module name) or a compiled `.json` path.
+        stacked: stack the last 4 observations along the last axis.
+        representation: "raw", "extracted" (SMM), "simple115" or "simple115v2".
+        rewards: comma-separated; must contain "scoring"; "checkpoints" adds the checkpoint reward.
+        write_goal_dumps, write_full_episode_dumps, render, write_video: must be False for now.
+        dump_frequency, logdir: accepted; they only matter for dumps.
+        extra_players: must be empty for now (no scripted or checkpoint players).
+        number_of_left_players_agent_controls, number_of_right_players_agent_controls: players the
+            agent controls on each side.
+        channel_dimensions: (width, height) of SMM observations.
+        other_config_options: GRF Config overrides; `action_set` ("default", "v2"),
+            `game_engine_random_seed` and `level` are honoured, display and video settings ignored.
+
+    Raises:
+        ValueError: a bad or not-yet-supported argument (GRF asserts in some of these cases).
+        touchline.ScenarioError: the scenario cannot be found or loaded.
+    """
+    options = dict(other_config_options or {})
+    level = options.pop("level", env_name)
+    if not level:
+        raise ValueError("env_name must name a scenario, e.g. env_name='academy_empty_goal_close'")
+    if representation in _arguments.RENDERED_REPRESENTATIONS or render:
+        raise ValueError(
+            "rendering (render=True, representation='pixels' or 'pixels_gray') is not available "
+            "yet in touchline; use 'extracted', 'simple115v2', 'simple115' or 'raw'"
+        )
+    if representation not in _arguments.REPRESENTATIONS:
+        raise ValueError(f"Unsupported representation: {representation}")
+    if stacked and representation == "raw":
+        raise ValueError("stacked=True needs an array representation, not 'raw'")
+    if write_goal_dumps or write_full_episode_dumps or write_video:
+        raise ValueError(
+            "dumps and videos (write_goal_dumps, write_full_episode_dumps, write_video) are not "
+            "available yet in touchline"
+        )
+    if extra_players:
+        raise ValueError(
+            f"extra_players={extra_players!r} is not supported yet: touchline has no scripted or "
+            "checkpoint players; the built-in AI drives every player the agent does not control"
+        )
+    action_set = options.pop("action_set", "default")
+    seed = options.pop(_SEED_OPTION, None)
+    physics_steps = options.pop("physics_steps_per_frame", 10)
+    if physics_steps != 10:
+        raise ValueError(
+            f"physics_steps_per_frame={physics_steps!r} is not supported: a step is always 10 ticks"
+        )
+    for key in sorted(options):
+        if key in _COSMETIC_OPTIONS:
+            continue
+        if key in _OFF_OPTIONS and not options[key]:
+            continue
+        if key in _OFF_OPTIONS:
+            raise ValueError(f"other_config_options[{key!r}] is not available yet in touchline")
+        raise ValueError(
+            f"other_config_options[{key!r}] is not supported; supported keys are 'action_set', "
+            f"'{_SEED_OPTION}', 'level', 'physics_steps_per_frame' (10) and the display settings "
+            f"({', '.join(sorted(_COSMETIC_OPTIONS))})"
+        )
+    left, right = _arguments.controls_argument(
+        number_of_left_players_agent_controls, number_of_right_players_agent_controls
+    )
+    core = _CoreEnv(
+        _arguments.scenario_argument(level),
+        representation=representation,
+        left_agents=left,
+        right_agents=right,
+        rewards=_arguments.rewards_argument(rewards),
+        action_set=_arguments.action_set_argument(action_set),
+        seed=_arguments.seed_argument(seed),
+        stacked=bool(stacked),
+        channel_dimensions=_arguments.channel_dimensions_argument(channel_dimensions),
+    )
+    return FootballEnv(core, representation)

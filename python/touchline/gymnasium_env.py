@@ -1,0 +1,212 @@
+"""`FootballEnv`: one touchline match as a `gymnasium.Env`."""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+import gymnasium
+import numpy as np
+from gymnasium import spaces
+
+from . import _arguments
+from ._touchline import Env as _CoreEnv
+
+
+def reset_info(core: _CoreEnv) -> dict[str, Any]:
+    """The info of a reset: `score`, `steps_left` and `game_mode`, as in the info of a step."""
+    raw = core.raw_observations()[0]
+    return {
+        "score": [int(goals) for goals in raw["score"]],
+        "steps_left": int(raw["steps_left"]),
+        "game_mode": int(raw["game_mode"]),
+    }
+
+
+class FootballEnv(gymnasium.Env[np.ndarray, Any]):
+    """A football match against touchline's built-in AI, with Google Research Football's conventions.
+
+    ## Description
+
+    One scenario of the stdlib (`touchline.scenario_names()`: the Academy drills and the 11 v 11
+    matches of GRF) or a compiled `.json` scenario. The agent controls one or more players of the
+    left team (and optionally of the right team); every other player is driven by the built-in AI.
+    One step is 0.1 s of game time (10 engine ticks); a full match is 3000 steps.
+
+    ## Action Space
+
+    GRF's action set (grf.md §5.2). `action_set="default"`: `Discrete(19)` —
+    0 idle, 1 left, 2 top_left, 3 top, 4 top_right, 5 right, 6 bottom_right, 7 bottom, 8 bottom_left,
+    9 long_pass, 10 high_pass, 11 short_pass, 12 shot, 13 sprint, 14 release_direction,
+    15 release_sprint, 16 sliding, 17 dribble, 18 release_dribble. `action_set="v2"` adds
+    19 builtin_ai (`Discrete(20)`). Directions and sprint/dribble are sticky (grf.md §5.3). With M > 1
+    controlled players the space is `MultiDiscrete([n] * M)`, left controllers first; a right-team
+    player's directions are in its own (rotated) frame.
+
+    ## Observation Space
+
+    Positions are GRF-normalised pitch coordinates (x in [-1, 1] towards the opponent goal,
+    y in [-0.42, 0.42], y down), directions are displacements per step in the same units, ball z is
+    in metres. Each controller sees the match in its own frame (a right-team player sees itself as
+    "left", attacking +x).
+
+    | representation | shape, dtype | content |
+    |---|---|---|
+    | `simple115v2` | (115,) float32 | 0–21 left positions (x, y per player, padded with −1 to 11 players), 22–43 left directions, 44–65 right positions, 66–87 right directions, 88–90 ball x, y, z, 91–93 ball direction, 94–96 ball owner one-hot (nobody, left, right), 97–107 active player one-hot, 108–114 game mode one-hot (grf.md §4.1) |
+    | `simple115` | (115,) float32 | the same blocks, the four player blocks back to back and padded only at the end (GRF's legacy layout) |
+    | `extracted` | (72, 96, 4) uint8 | Super Mini Map: channels left team, right team, ball, active player; 255 where marked (grf.md §4.2); (height, width) from `channel_dimensions=(width, height)` |
+
+    `stacked=True` stacks the last 4 observations along the last axis (115 → 460 floats, 4 → 16
+    channels; grf.md §4.4). With M > 1 controlled players observations gain a leading axis of size M.
+    The space is `Box(-inf, inf)` for `simple115*` (as in GRF) and `Box(0, 255)` for `extracted`.
+    `representation="raw"` is not accepted here (a list of dicts has no Box); use
+    `raw_observations()`, `touchline.compat.gfootball` or `touchline._touchline.Env`.
+
+    ## Rewards
+
+    `rewards="scoring"`: +1 when the left team scores, −1 when it concedes (a right-team controller
+    gets the opposite). `"scoring,checkpoints"` adds GRF's checkpoint reward: 0.1 for each of 10
+    distance rings around the opponent goal, collected while the controlled player owns the ball,
+    all paid at once on scoring (grf.md §6). With M > 1 controlled players, GRF returns one reward
+    per player; Gymnasium needs a float, so `reward` is the **mean** of the controllers' rewards and
+    `info["rewards"]` holds the float32 vector (M,). For self-play use `touchline.parallel_env`.
+
+    ## Starting State
+
+    The scenario's positions (GRF's tables, grf.md §2.4), drawn again at every reset where the
+    scenario randomises them. The first observation has `steps_left = game_duration + 1`.
+
+    ## Episode End
+
+    * `terminated`: the scenario's end conditions — a goal, the ball going out of play, or a
+      change of possession in the Academy drills (grf.md §7.2).
+    * `truncated`: the time limit, after `game_duration + 1` steps (401 for Academy drills, 3001 for
+      full matches). Calling `step` after either raises `RuntimeError`; call `reset`.
+
+    `info` carries `score` ([left, right] goals), `steps_left`, `game_mode` (0 normal, 1 kickoff,
+    2 goal kick, 3 free kick, 4 corner, 5 throw-in, 6 penalty), `score_reward` (the left team's
+    scoring reward this step), `checkpoint_reward`, `steps`, `episode`, and with M > 1 `rewards`.
+
+    ## Arguments
+
+    ```python
+    touchline.make(scenario, representation="simple115v2", rewards="scoring", stacked=False,
+                   number_of_left_players_agent_controls=1, number_of_right_players_agent_controls=0,
+                   seed=None, channel_dimensions=(96, 72), action_set="default", render_mode=None)
+    gymnasium.make("touchline/academy_empty_goal_close-v0", representation="extracted")
+    ```
+
+    * `scenario`: a stdlib name or the path of a compiled `.json` scenario.
+    * `seed`: seed of the first episode; None draws a random one. `reset(seed=s)` reseeds, and
+      `reset()` continues with the next episode of the current seed. Same seed and same actions
+      give the same trajectory.
+    * `render_mode`: must be None; rendering is not available yet.
+
+    ## Version History
+
+    * v0: first version.
+    """
+
+    metadata: dict[str, Any] = {"render_modes": []}
+
+    def __init__(
+        self,
+        scenario: str | os.PathLike[str],
+        representation: str = "simple115v2",
+        rewards: str = "scoring",
+        stacked: bool = False,
+        number_of_left_players_agent_controls: int = 1,
+        number_of_right_players_agent_controls: int = 0,
+        seed: int | None = None,
+        channel_dimensions: tuple[int, int] = (96, 72),
+        action_set: str = "default",
+        render_mode: str | None = None,
+    ) -> None:
+        _arguments.render_mode_argument(render_mode)
+        left, right = _arguments.controls_argument(
+            number_of_left_players_agent_controls, number_of_right_players_agent_controls
+        )
+        self.render_mode = render_mode
+        self._core = _CoreEnv(
+            _arguments.scenario_argument(scenario),
+            representation=_arguments.representation_argument(representation, allow_raw=False),
+            left_agents=left,
+            right_agents=right,
+            rewards=_arguments.rewards_argument(rewards),
+            action_set=_arguments.action_set_argument(action_set),
+            seed=_arguments.seed_argument(seed),
+            stacked=bool(stacked),
+            channel_dimensions=_arguments.channel_dimensions_argument(channel_dimensions),
+        )
+        self.representation = representation
+        # A scenario with control_all_players may give the agent more players than asked for.
+        self.num_controllers: int = self._core.num_controllers
+        self._single = self.num_controllers == 1
+        self._action_count: int = self._core.action_count
+        self._actions = np.zeros(self.num_controllers, dtype=np.int64)
+        shape = tuple(self._core.observation_shape)
+        if not self._single:
+            shape = (self.num_controllers, *shape)
+        self.observation_space = _arguments.observation_box(shape, self._core.observation_dtype)
+        self.action_space = (
+            spaces.Discrete(self._action_count)
+            if self._single
+            else spaces.MultiDiscrete([self._action_count] * self.num_controllers)
+        )
+
+    @property
+    def scenario_name(self) -> str:
+        """Name of the scenario being played."""
+        return self._core.scenario_name
+
+    @property
+    def controller_sides(self) -> list[str]:
+        """ "left" or "right" for each controlled player, left controllers first."""
+        return self._core.controller_sides
+
+    @property
+    def game_duration(self) -> int:
+        """The scenario's time limit in steps (the episode truncates after `game_duration + 1`)."""
+        return self._core.game_duration
+
+    def reset(
+        self, *, seed: int | None = None, options: dict[str, Any] | None = None
+    ) -> tuple[np.ndarray, dict[str, Any]]:
+        """Starts an episode: reseeds when `seed` is given, else plays the current seed's next episode.
+
+        `options` is accepted for Gymnasium's API; touchline defines no reset options yet.
+        Returns `(observation, info)`; info has `score`, `steps_left`, `game_mode` and the
+        episode's starting counters.
+        """
+        super().reset(seed=seed)
+        if seed is None:
+            observation = self._core.reset()
+        else:
+            observation = self._core.reset(_arguments.checked_seed(seed))
+        return (observation[0] if self._single else observation), reset_info(self._core)
+
+    def step(self, action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
+        """One step (0.1 s of game time) with one action index per controlled player.
+
+        Raises:
+            ValueError: the action is not an integer index in the action set, or (M > 1) not an
+                array of shape (M,).
+            RuntimeError: the episode has ended; call `reset`.
+        """
+        if self._single:
+            observation, rewards, terminated, truncated, info = self._core.step(
+                _arguments.single_action(action, self._action_count)
+            )
+            return observation[0], float(rewards[0]), terminated, truncated, info
+        _arguments.write_actions(action, self._actions, self._action_count)
+        observation, rewards, terminated, truncated, info = self._core.step(self._actions)
+        info["rewards"] = rewards
+        return observation, float(rewards.mean()), terminated, truncated, info
+
+    def raw_observations(self) -> list[dict[str, Any]]:
+        """GRF's raw observation of each controlled player (a dict of numpy arrays, grf.md §3.1)."""
+        return self._core.raw_observations()
+
+    def render(self) -> None:
+        """touchline does not render yet; with `render_mode=None` there is nothing to return."""
+        return None

@@ -1,0 +1,91 @@
+"""`touchline.make` and `touchline.parallel_env`: the two ways in for most users."""
+
+from __future__ import annotations
+
+import os
+from typing import TYPE_CHECKING
+
+from .gymnasium_env import FootballEnv
+
+if TYPE_CHECKING:
+    from .pettingzoo_env import FootballParallelEnv
+
+
+def make(
+    scenario: str | os.PathLike[str],
+    representation: str = "simple115v2",
+    rewards: str = "scoring",
+    stacked: bool = False,
+    number_of_left_players_agent_controls: int = 1,
+    number_of_right_players_agent_controls: int = 0,
+    seed: int | None = None,
+    channel_dimensions: tuple[int, int] = (96, 72),
+    action_set: str = "default",
+    render_mode: str | None = None,
+) -> FootballEnv:
+    """A `gymnasium.Env` playing `scenario` (a stdlib name or a compiled `.json` path).
+
+    Args:
+        scenario: stdlib name (`touchline.scenario_names()`) or path of a compiled `.json` scenario.
+        representation: "simple115v2" (float32 (115,)), "simple115" (GRF's legacy layout) or
+            "extracted" (SMM, uint8 (72, 96, 4)); see `FootballEnv` for every index.
+        rewards: "scoring" or "scoring,checkpoints" (GRF's reward names, comma-separated).
+        stacked: stack the last 4 observations along the last axis.
+        number_of_left_players_agent_controls: players the agent controls on the left team.
+        number_of_right_players_agent_controls: players the agent controls on the right team.
+        seed: seed of the first episode; None draws a random one.
+        channel_dimensions: (width, height) of SMM observations.
+        action_set: "default" (19 actions) or "v2" (20, adds builtin_ai).
+        render_mode: must be None (rendering is not available yet).
+
+    Raises:
+        touchline.ScenarioError: the scenario cannot be found or loaded; the message is the
+            rendered diagnostic, with the nearest names for a misspelt one.
+        ValueError: a bad argument.
+    """
+    return FootballEnv(
+        scenario,
+        representation=representation,
+        rewards=rewards,
+        stacked=stacked,
+        number_of_left_players_agent_controls=number_of_left_players_agent_controls,
+        number_of_right_players_agent_controls=number_of_right_players_agent_controls,
+        seed=seed,
+        channel_dimensions=channel_dimensions,
+        action_set=action_set,
+        render_mode=render_mode,
+    )
+
+
+def parallel_env(
+    scenario: str | os.PathLike[str],
+    number_of_left_players_agent_controls: int = 1,
+    number_of_right_players_agent_controls: int = 1,
+    representation: str = "simple115v2",
+    rewards: str = "scoring",
+    stacked: bool = False,
+    seed: int | None = None,
+    channel_dimensions: tuple[int, int] = (96, 72),
+    action_set: str = "default",
+    render_mode: str | None = None,
+) -> FootballParallelEnv:
+    """A PettingZoo `ParallelEnv` with one agent per controlled player, on one or both teams.
+
+    Agents are `left_0 …` and `right_0 …`, each observing in its own frame; controlling players on
+    both sides is self-play. The arguments are those of `make`; see `FootballParallelEnv`.
+    Needs the `pettingzoo` package.
+    """
+    from .pettingzoo_env import FootballParallelEnv
+
+    return FootballParallelEnv(
+        scenario,
+        number_of_left_players_agent_controls=number_of_left_players_agent_controls,
+        number_of_right_players_agent_controls=number_of_right_players_agent_controls,
+        representation=representation,
+        rewards=rewards,
+        stacked=stacked,
+        seed=seed,
+        channel_dimensions=channel_dimensions,
+        action_set=action_set,
+        render_mode=render_mode,
+    )

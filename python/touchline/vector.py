@@ -1,0 +1,200 @@
+"""Batched matches stepped in Rust threads: `touchline.vector.make(scenario, num_envs=N)`.
+
+```python
+import touchline
+envs = touchline.vector.make("academy_empty_goal_close", num_envs=8, seed=0)
+observations, infos = envs.reset(seed=0)
+observations, rewards, terminated, truncated, infos = envs.step(envs.action_space.sample())
+```
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+import gymnasium
+import numpy as np
+from gymnasium import spaces
+from gymnasium.vector import AutoresetMode
+from gymnasium.vector.utils import batch_space
+
+from . import _arguments
+from ._touchline import VectorEnv as _CoreVectorEnv
+
+__all__ = ["TouchlineVectorEnv", "make"]
+
+
+class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.ndarray]):
+    """`num_envs` independent matches, one controlled left player each, stepped in Rust threads.
+
+    Each step releases the GIL, steps every match on `num_threads` threads (0: one per core) and
+    writes observations `(num_envs, *shape)`, rewards `(num_envs,)` float32 and the terminated and
+    truncated flags `(num_envs,)` bool into numpy arrays allocated once. A match that ends is reset
+    in the same step (`metadata["autoreset_mode"]` is `AutoresetMode.SAME_STEP`): the observation
+    returned for it is the first one of its next episode, and its reward, terminated and truncated
+    are those of the step that ended the previous one.
+
+    Env `i` plays with seed `seed + i`: its trajectory is that of `touchline.make(scenario,
+    seed=seed + i)` given the same actions, resetting with `reset()` after each episode.
+
+    Args:
+        scenario: a stdlib name or the path of a compiled `.json` scenario.
+        num_envs: number of matches.
+        num_threads: worker threads; 0 uses one per core.
+        copy: True (the default, as Gymnasium's own vector envs) returns fresh arrays from every
+            `reset` and `step`; False returns the preallocated buffers themselves, which the next
+            call overwrites — faster, but copy whatever you keep.
+        representation, rewards, stacked, seed, channel_dimensions, action_set, render_mode: as
+            in `touchline.make`. `seed=None` draws a random seed.
+
+    Not yet provided: `infos` is empty — the final observation and info of an episode that ended
+    (Gymnasium's `final_obs` / `final_info` in same-step mode) and the per-env score are not
+    available from the Rust vector env.
+    """
+
+    def __init__(
+        self,
+        scenario: str | os.PathLike[str],
+        num_envs: int,
+        num_threads: int = 0,
+        representation: str = "simple115v2",
+        rewards: str = "scoring",
+        stacked: bool = False,
+        seed: int | None = None,
+        channel_dimensions: tuple[int, int] = (96, 72),
+        action_set: str = "default",
+        render_mode: str | None = None,
+        copy: bool = True,
+    ) -> None:
+        _arguments.render_mode_argument(render_mode)
+        if (
+            isinstance(num_envs, bool)
+            or not isinstance(num_envs, (int, np.integer))
+            or num_envs < 1
+        ):
+            raise ValueError(f"num_envs must be a positive integer, got {num_envs!r}")
+        if (
+            isinstance(num_threads, bool)
+            or not isinstance(num_threads, (int, np.integer))
+            or num_threads < 0
+        ):
+            raise ValueError(
+                f"num_threads must be a non-negative integer (0: one per core), got {num_threads!r}"
+            )
+        self._core = _CoreVectorEnv(
+            _arguments.scenario_argument(scenario),
+            int(num_envs),
+            num_threads=int(num_threads),
+            representation=_arguments.representation_argument(representation, allow_raw=False),
+            left_agents=1,
+            right_agents=0,
+            rewards=_arguments.rewards_argument(rewards),
+            action_set=_arguments.action_set_argument(action_set),
+            seed=_arguments.seed_argument(seed),
+            stacked=bool(stacked),
+            channel_dimensions=_arguments.channel_dimensions_argument(channel_dimensions),
+        )
+        if self._core.num_controllers != 1:
+            raise ValueError(
+                f"the vector env drives one player per match, but this scenario gives the agent "
+                f"{self._core.num_controllers} (control_all_players); use touchline.make or "
+                "touchline.parallel_env"
+            )
+        self.num_envs = int(num_envs)
+        self.copy = bool(copy)
+        self.render_mode = render_mode
+        self.representation = representation
+        self.metadata = {"autoreset_mode": AutoresetMode.SAME_STEP, "render_modes": []}
+        shape = tuple(self._core.observation_shape)
+        self.single_observation_space = _arguments.observation_box(
+            shape, self._core.observation_dtype
+        )
+        self.single_action_space = spaces.Discrete(self._core.action_count)
+        self.observation_space = batch_space(self.single_observation_space, self.num_envs)
+        self.action_space = batch_space(self.single_action_space, self.num_envs)
+        self._action_count: int = self._core.action_count
+
+        n = self.num_envs
+        dtype = self.single_observation_space.dtype
+        self._observations = np.zeros((n, *shape), dtype=dtype)
+        self._rewards = np.zeros(n, dtype=np.float32)
+        self._terminated = np.zeros(n, dtype=np.bool_)
+        self._truncated = np.zeros(n, dtype=np.bool_)
+        self._actions = np.zeros(n, dtype=np.int64)
+        # The extension's layout has a controller axis of size 1: views, no copies.
+        self._observations_m = self._observations.reshape(n, 1, *shape)
+        self._rewards_m = self._rewards.reshape(n, 1)
+        self._actions_m = self._actions.reshape(n, 1)
+
+    def reset(
+        self, *, seed: int | None = None, options: dict[str, Any] | None = None
+    ) -> tuple[np.ndarray, dict[str, Any]]:
+        """Resets every match; with `seed`, match i is reseeded with `seed + i`.
+
+        `options` is accepted for Gymnasium's API; touchline defines no reset options yet.
+        """
+        if isinstance(seed, (list, tuple)):
+            raise ValueError(
+                "pass one integer seed (match i gets seed + i) or None, not a list of seeds"
+            )
+        super().reset(seed=seed)
+        if seed is None:
+            self._core.reset(self._observations_m)
+        else:
+            self._core.reset(self._observations_m, _arguments.checked_seed(seed))
+        observations = self._observations.copy() if self.copy else self._observations
+        return observations, {}
+
+    def step(
+        self, actions: Any
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
+        """Steps every match with `actions` (num_envs,) integer indices.
+
+        Raises:
+            ValueError: actions of another shape, not integers, or outside the action set.
+        """
+        array = np.asarray(actions)
+        if array.shape != (self.num_envs,):
+            raise ValueError(
+                f"expected actions of shape ({self.num_envs},) (one per match), got shape {array.shape}"
+            )
+        if array.dtype.kind not in "iu":
+            raise ValueError(f"actions must be integer indices, got dtype {array.dtype}")
+        bad = (array < 0) | (array >= self._action_count)
+        if bad.any():
+            index = int(np.argmax(bad))
+            raise ValueError(
+                f"action {int(array[index])} of match {index} is outside the action set: indices "
+                f"run from 0 to {self._action_count - 1}"
+            )
+        self._actions[:] = array
+        self._core.step(
+            self._actions_m,
+            self._observations_m,
+            self._rewards_m,
+            self._terminated,
+            self._truncated,
+        )
+        if self.copy:
+            return (
+                self._observations.copy(),
+                self._rewards.copy(),
+                self._terminated.copy(),
+                self._truncated.copy(),
+                {},
+            )
+        return self._observations, self._rewards, self._terminated, self._truncated, {}
+
+    def close_extras(self, **kwargs: Any) -> None:
+        """Nothing to release: the matches are freed with the object."""
+
+
+def make(
+    scenario: str | os.PathLike[str],
+    num_envs: int,
+    num_threads: int = 0,
+    **kwargs: Any,
+) -> TouchlineVectorEnv:
+    """`num_envs` matches of `scenario` stepped in Rust threads; see `TouchlineVectorEnv`."""
+    return TouchlineVectorEnv(scenario, num_envs, num_threads=num_threads, **kwargs)

@@ -69,6 +69,105 @@ fn slice<'a>(array: &'a mut ObsArray<'_>) -> PyResult<Slice<'a>> {
     })
 }
 
+/// An element type of observation arrays.
+trait ObsElem: Copy + Send + Sync {
+    fn out(slice: &mut [Self]) -> ObsOut<'_>;
+}
+
+impl ObsElem for f32 {
+    fn out(slice: &mut [f32]) -> ObsOut<'_> {
+        ObsOut::F32(slice)
+    }
+}
+
+impl ObsElem for u8 {
+    fn out(slice: &mut [u8]) -> ObsOut<'_> {
+        ObsOut::U8(slice)
+    }
+}
+
+/// One vector step's inputs and flat outputs.
+struct Batch<'a> {
+    actions: &'a [u32],
+    rewards: &'a mut [f32],
+    terminated: &'a mut [bool],
+    truncated: &'a mut [bool],
+    controllers: usize,
+    per_env: usize,
+}
+
+impl Batch<'_> {
+    /// Steps every env; an env that ends writes its last observation into `finals` (if given),
+    /// resets, and writes its new first observation into `obs`. With one thread the work stays
+    /// on the calling thread; otherwise each thread takes one contiguous run of envs.
+    fn run<T: ObsElem>(
+        self,
+        envs: &mut [EnvCore],
+        pool: &rayon::ThreadPool,
+        obs: &mut [T],
+        finals: Option<&mut [T]>,
+    ) -> Result<(), touchline_engine::EngineError> {
+        let (m, per_env) = (self.controllers, self.per_env);
+        let one = |e: &mut EnvCore,
+                   a: &[u32],
+                   r: &mut [f32],
+                   term: &mut bool,
+                   trunc: &mut bool,
+                   o: &mut [T],
+                   f: Option<&mut [T]>|
+         -> Result<(), touchline_engine::EngineError> {
+            let outcome = e.step(a)?;
+            r.copy_from_slice(e.env.rewards());
+            *term = outcome.terminated;
+            *trunc = outcome.truncated;
+            let done = outcome.terminated || outcome.truncated;
+            if done {
+                if let Some(f) = f {
+                    e.write_observations(T::out(f), false);
+                }
+                e.reset(None);
+            }
+            e.write_observations(T::out(o), done);
+            Ok(())
+        };
+        let threads = pool.current_num_threads();
+        let n = envs.len();
+        let mut finals = finals;
+        if threads <= 1 || n == 1 {
+            let mut final_chunks = finals.as_deref_mut().map(|f| f.chunks_mut(per_env));
+            for (i, e) in envs.iter_mut().enumerate() {
+                let f = final_chunks.as_mut().and_then(Iterator::next);
+                one(
+                    e,
+                    &self.actions[i * m..(i + 1) * m],
+                    &mut self.rewards[i * m..(i + 1) * m],
+                    &mut self.terminated[i],
+                    &mut self.truncated[i],
+                    &mut obs[i * per_env..(i + 1) * per_env],
+                    f,
+                )?;
+            }
+            return Ok(());
+        }
+        let run = n.div_ceil(threads);
+        pool.install(|| {
+            let work = envs
+                .par_iter_mut()
+                .zip(self.actions.par_chunks(m))
+                .zip(self.rewards.par_chunks_mut(m))
+                .zip(self.terminated.par_iter_mut().zip(self.truncated.par_iter_mut()))
+                .zip(obs.par_chunks_mut(per_env))
+                .with_min_len(run);
+            match finals {
+                Some(f) => work
+                    .zip(f.par_chunks_mut(per_env))
+                    .try_for_each(|(((((e, a), r), (t, u)), o), f)| one(e, a, r, t, u, o, Some(f))),
+                None => work.try_for_each(|((((e, a), r), (t, u)), o)| one(e, a, r, t, u, o, None)),
+            }
+        })
+    }
+}
+
 #[pymethods]
 impl PyVectorEnv {
     #[new]
@@ -174,6 +273,8 @@ impl PyVectorEnv {
         })
     }
 
+    #[pyo3(signature = (actions, observations, rewards, terminated, truncated, final_observations = None))]
+    #[expect(clippy::too_many_arguments, reason = "every output array is the caller's")]
     fn step(
         &mut self,
         py: Python<'_>,
@@ -182,6 +283,7 @@ impl PyVectorEnv {
         mut rewards: PyReadwriteArray2<'_, f32>,
         mut terminated: PyReadwriteArray1<'_, bool>,
         mut truncated: PyReadwriteArray1<'_, bool>,
+        final_observations: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<()> {
         guard(|| {
             let n = self.envs.len();
@@ -204,55 +306,29 @@ impl PyVectorEnv {
                 match u32::try_from(a) {
                     Ok(v) if (v as usize) < limit => self.actions.push(v),
                     _ => {
-                        return Err(PyValueError::new_err(format!(
-                            "action {a} is outside the action set (0..{limit})"
-                        )));
+                        return Err(PyValueError::new_err(format!("action {a} is outside the action set (0..{limit})")));
                     }
                 }
             }
             let per_env = self.per_env_obs();
             let mut array = obs_buffer(observations, self.dtype(), per_env * n)?;
+            let mut finals = final_observations.map(|f| obs_buffer(f, self.dtype(), per_env * n)).transpose()?;
             let out = slice(&mut array)?;
-            let per_env = per_env.max(1);
-            let rewards = rewards.as_slice_mut().map_err(|_| contiguous())?;
-            let terminated = terminated.as_slice_mut().map_err(|_| contiguous())?;
-            let truncated = truncated.as_slice_mut().map_err(|_| contiguous())?;
-            let (envs, pool, actions) = (&mut self.envs, &self.pool, &self.actions);
-            let result: Result<(), touchline_engine::EngineError> = py.detach(|| {
-                pool.install(|| {
-                    let work = envs
-                        .par_iter_mut()
-                        .zip(actions.par_chunks(m))
-                        .zip(rewards.par_chunks_mut(m))
-                        .zip(terminated.par_iter_mut().zip(truncated.par_iter_mut()));
-                    let step = |e: &mut EnvCore, a: &[u32], r: &mut [f32], term: &mut bool, trunc: &mut bool| {
-                        let outcome = e.step(a)?;
-                        r.copy_from_slice(e.env.rewards());
-                        *term = outcome.terminated;
-                        *trunc = outcome.truncated;
-                        let done = outcome.terminated || outcome.truncated;
-                        if done {
-                            e.reset(None);
-                        }
-                        Ok(done)
-                    };
-                    match out {
-                        Slice::F32(s) => {
-                            work.zip(s.par_chunks_mut(per_env)).try_for_each(|((((e, a), r), (term, trunc)), o)| {
-                                let fresh = step(e, a, r, term, trunc)?;
-                                e.write_observations(ObsOut::F32(o), fresh);
-                                Ok(())
-                            })
-                        }
-                        Slice::U8(s) => {
-                            work.zip(s.par_chunks_mut(per_env)).try_for_each(|((((e, a), r), (term, trunc)), o)| {
-                                let fresh = step(e, a, r, term, trunc)?;
-                                e.write_observations(ObsOut::U8(o), fresh);
-                                Ok(())
-                            })
-                        }
-                    }
-                })
+            let final_out = finals.as_mut().map(slice).transpose()?;
+            let batch = Batch {
+                actions: &self.actions,
+                rewards: rewards.as_slice_mut().map_err(|_| contiguous())?,
+                terminated: terminated.as_slice_mut().map_err(|_| contiguous())?,
+                truncated: truncated.as_slice_mut().map_err(|_| contiguous())?,
+                controllers: m,
+                per_env: per_env.max(1),
+            };
+            let (envs, pool) = (&mut self.envs, &self.pool);
+            let result = py.detach(|| match (out, final_out) {
+                (Slice::F32(o), Some(Slice::F32(f))) => batch.run(envs, pool, o, Some(f)),
+                (Slice::F32(o), _) => batch.run(envs, pool, o, None),
+                (Slice::U8(o), Some(Slice::U8(f))) => batch.run(envs, pool, o, Some(f)),
+                (Slice::U8(o), _) => batch.run(envs, pool, o, None),
             });
             result.map_err(engine_error)
         })

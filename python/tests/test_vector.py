@@ -48,16 +48,20 @@ def test_equals_single_envs_with_autoreset(representation: str, num_threads: int
     episodes_ended = 0
     for _ in range(steps):
         actions = rng.integers(19, size=n)
-        obs, rewards, terminated, truncated, _ = envs.step(actions)
+        obs, rewards, terminated, truncated, infos = envs.step(actions)
         for i, env in enumerate(singles):
             single_obs, reward, term, trunc, _ = env.step(int(actions[i]))
             assert (terminated[i], truncated[i]) == (term, trunc)
             assert rewards[i] == np.float32(reward)
             if term or trunc:
+                # Gymnasium's same-step autoreset keys carry the episode's last observation.
+                assert infos["_final_obs"][i] and infos["_final_info"][i]
+                np.testing.assert_array_equal(infos["final_obs"][i], single_obs)
                 episodes_ended += 1
-                single_obs, _ = (
-                    env.reset()
-                )  # the vector env has already reset: same first observation
+                # The vector env has already reset: same first observation.
+                single_obs, _ = env.reset()
+            else:
+                assert not infos or not infos["_final_obs"][i]
             np.testing.assert_array_equal(obs[i], single_obs)
     assert episodes_ended >= n, "the test should cover autoresets"
 

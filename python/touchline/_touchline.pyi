@@ -141,11 +141,13 @@ class VectorEnv:
         rewards: npt.NDArray[np.float32],
         terminated: npt.NDArray[np.bool_],
         truncated: npt.NDArray[np.bool_],
+        final_observations: npt.NDArray[Any] | None = None,
     ) -> None:
         """Steps every env with `actions` (num_envs, M) and writes the results into the given
         preallocated arrays without copies: observations (num_envs, M, *shape), rewards
         (num_envs, M), terminated and truncated (num_envs,). Envs that end are reset at once and
-        their new first observation is written.
+        their new first observation is written; their last observation goes to
+        `final_observations` (same shape as `observations`) when given.
 
         Raises:
             ValueError: a wrong shape or dtype, or an action outside the action set.

@@ -48,9 +48,9 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         representation, rewards, stacked, seed, channel_dimensions, action_set, render_mode: as
             in `touchline.make`. `seed=None` draws a random seed.
 
-    Not yet provided: `infos` is empty — the final observation and info of an episode that ended
-    (Gymnasium's `final_obs` / `final_info` in same-step mode) and the per-env score are not
-    available from the Rust vector env.
+    When matches end, `infos` holds Gymnasium's same-step keys: `final_obs` (object array, the
+    last observation of each match that ended, None elsewhere), `final_info` (object array of
+    dicts) and the masks `_final_obs` / `_final_info`. Otherwise `infos` is empty.
     """
 
     def __init__(
@@ -122,6 +122,7 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         self._terminated = np.zeros(n, dtype=np.bool_)
         self._truncated = np.zeros(n, dtype=np.bool_)
         self._actions = np.zeros(n, dtype=np.int64)
+        self._final_observations = np.zeros((n, *shape), dtype=dtype)
         # The extension's layout has a controller axis of size 1: views, no copies.
         self._observations_m = self._observations.reshape(n, 1, *shape)
         self._rewards_m = self._rewards.reshape(n, 1)
@@ -175,16 +176,35 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
             self._rewards_m,
             self._terminated,
             self._truncated,
+            self._final_observations.reshape(self.num_envs, 1, *self._final_observations.shape[1:]),
         )
+        infos = self._final_infos()
         if self.copy:
             return (
                 self._observations.copy(),
                 self._rewards.copy(),
                 self._terminated.copy(),
                 self._truncated.copy(),
-                {},
+                infos,
             )
-        return self._observations, self._rewards, self._terminated, self._truncated, {}
+        return self._observations, self._rewards, self._terminated, self._truncated, infos
+
+    def _final_infos(self) -> dict[str, Any]:
+        """Gymnasium's same-step autoreset keys for the matches that just ended."""
+        done = self._terminated | self._truncated
+        if not done.any():
+            return {}
+        final_obs = np.full(self.num_envs, None, dtype=object)
+        final_info = np.full(self.num_envs, None, dtype=object)
+        for i in np.flatnonzero(done):
+            final_obs[i] = self._final_observations[i].copy()
+            final_info[i] = {}
+        return {
+            "final_obs": final_obs,
+            "_final_obs": done.copy(),
+            "final_info": final_info,
+            "_final_info": done.copy(),
+        }
 
     def close_extras(self, **kwargs: Any) -> None:
         """Nothing to release: the matches are freed with the object."""

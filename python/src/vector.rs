@@ -4,16 +4,20 @@
 use numpy::{PyReadonlyArray2, PyReadwriteArray1, PyReadwriteArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use rayon::prelude::*;
 
 use crate::core::{EnvArgs, EnvCore, ObsOut};
 use crate::errors::{engine_error, guard};
+use crate::worker::{Slot, Worker};
+use touchline_engine::EngineError;
 
 /// `num_envs` matches with the same arguments and seeds `seed + i` (see `_touchline.pyi`).
+///
+/// The envs are cut into one contiguous run per thread: the calling thread steps the first run
+/// (with the GIL released) while each [`Worker`] owns and steps one of the others.
 #[pyclass(module = "touchline._touchline", name = "VectorEnv")]
 pub(crate) struct PyVectorEnv {
     envs: Vec<EnvCore>,
-    pool: rayon::ThreadPool,
+    workers: Vec<Worker>,
     actions: Vec<u32>,
 }
 
@@ -72,11 +76,16 @@ fn slice<'a>(array: &'a mut ObsArray<'_>) -> PyResult<Slice<'a>> {
 /// An element type of observation arrays.
 trait ObsElem: Copy + Send + Sync {
     fn out(slice: &mut [Self]) -> ObsOut<'_>;
+    /// The worker slot's buffer of this type: (observations, final observations).
+    fn of(slot: &Slot) -> (&[Self], &[Self]);
 }
 
 impl ObsElem for f32 {
     fn out(slice: &mut [f32]) -> ObsOut<'_> {
         ObsOut::F32(slice)
+    }
+    fn of(slot: &Slot) -> (&[f32], &[f32]) {
+        (&slot.obs_f32, &slot.finals_f32)
     }
 }
 
@@ -84,87 +93,86 @@ impl ObsElem for u8 {
     fn out(slice: &mut [u8]) -> ObsOut<'_> {
         ObsOut::U8(slice)
     }
+    fn of(slot: &Slot) -> (&[u8], &[u8]) {
+        (&slot.obs_u8, &slot.finals_u8)
+    }
 }
 
-/// One vector step's inputs and flat outputs.
-struct Batch<'a> {
-    actions: &'a [u32],
+/// One vector step's flat outputs (the caller's arrays).
+struct Outputs<'a, T> {
     rewards: &'a mut [f32],
     terminated: &'a mut [bool],
     truncated: &'a mut [bool],
-    controllers: usize,
-    per_env: usize,
+    obs: &'a mut [T],
+    finals: Option<&'a mut [T]>,
 }
 
-impl Batch<'_> {
-    /// Steps every env; an env that ends writes its last observation into `finals` (if given),
-    /// resets, and writes its new first observation into `obs`. With one thread the work stays
-    /// on the calling thread; otherwise each thread takes one contiguous run of envs.
-    fn run<T: ObsElem>(
-        self,
-        envs: &mut [EnvCore],
-        pool: &rayon::ThreadPool,
-        obs: &mut [T],
-        finals: Option<&mut [T]>,
-    ) -> Result<(), touchline_engine::EngineError> {
-        let (m, per_env) = (self.controllers, self.per_env);
-        let one = |e: &mut EnvCore,
-                   a: &[u32],
-                   r: &mut [f32],
-                   term: &mut bool,
-                   trunc: &mut bool,
-                   o: &mut [T],
-                   f: Option<&mut [T]>|
-         -> Result<(), touchline_engine::EngineError> {
-            let outcome = e.step(a)?;
-            r.copy_from_slice(e.env.rewards());
-            *term = outcome.terminated;
-            *trunc = outcome.truncated;
+impl<T: ObsElem> Outputs<'_, T> {
+    /// Steps the calling thread's envs (the first ones) straight into the outputs.
+    fn step_own(&mut self, envs: &mut [EnvCore], actions: &[u32], m: usize, per_env: usize) -> Result<(), EngineError> {
+        for (i, e) in envs.iter_mut().enumerate() {
+            let outcome = e.step(&actions[i * m..(i + 1) * m])?;
+            self.rewards[i * m..(i + 1) * m].copy_from_slice(e.env.rewards());
+            self.terminated[i] = outcome.terminated;
+            self.truncated[i] = outcome.truncated;
             let done = outcome.terminated || outcome.truncated;
             if done {
-                if let Some(f) = f {
-                    e.write_observations(T::out(f), false);
+                if let Some(f) = self.finals.as_deref_mut() {
+                    e.write_observations(T::out(&mut f[i * per_env..(i + 1) * per_env]), false);
                 }
                 e.reset(None);
             }
-            e.write_observations(T::out(o), done);
-            Ok(())
-        };
-        let threads = pool.current_num_threads();
-        let n = envs.len();
-        let mut finals = finals;
-        if threads <= 1 || n == 1 {
-            let mut final_chunks = finals.as_deref_mut().map(|f| f.chunks_mut(per_env));
-            for (i, e) in envs.iter_mut().enumerate() {
-                let f = final_chunks.as_mut().and_then(Iterator::next);
-                one(
-                    e,
-                    &self.actions[i * m..(i + 1) * m],
-                    &mut self.rewards[i * m..(i + 1) * m],
-                    &mut self.terminated[i],
-                    &mut self.truncated[i],
-                    &mut obs[i * per_env..(i + 1) * per_env],
-                    f,
-                )?;
-            }
-            return Ok(());
+            e.write_observations(T::out(&mut self.obs[i * per_env..(i + 1) * per_env]), done);
         }
-        let run = n.div_ceil(threads);
-        pool.install(|| {
-            let work = envs
-                .par_iter_mut()
-                .zip(self.actions.par_chunks(m))
-                .zip(self.rewards.par_chunks_mut(m))
-                .zip(self.terminated.par_iter_mut().zip(self.truncated.par_iter_mut()))
-                .zip(obs.par_chunks_mut(per_env))
-                .with_min_len(run);
-            match finals {
-                Some(f) => work
-                    .zip(f.par_chunks_mut(per_env))
-                    .try_for_each(|(((((e, a), r), (t, u)), o), f)| one(e, a, r, t, u, o, Some(f))),
-                None => work.try_for_each(|((((e, a), r), (t, u)), o)| one(e, a, r, t, u, o, None)),
+        Ok(())
+    }
+
+    /// Copies a worker's results for envs `first..first + slot.envs.len()` into the outputs.
+    fn copy_from(&mut self, slot: &Slot, first: usize, m: usize, per_env: usize) {
+        let n = slot.envs.len();
+        let (obs, finals) = T::of(slot);
+        self.rewards[first * m..(first + n) * m].copy_from_slice(&slot.rewards);
+        self.terminated[first..first + n].copy_from_slice(&slot.terminated);
+        self.truncated[first..first + n].copy_from_slice(&slot.truncated);
+        self.obs[first * per_env..(first + n) * per_env].copy_from_slice(obs);
+        if let Some(f) = self.finals.as_deref_mut() {
+            for i in 0..n {
+                if slot.terminated[i] || slot.truncated[i] {
+                    let range = (first + i) * per_env..(first + i + 1) * per_env;
+                    f[range].copy_from_slice(&finals[i * per_env..(i + 1) * per_env]);
+                }
             }
-        })
+        }
+    }
+}
+
+impl PyVectorEnv {
+    /// Steps every env: workers start, the calling thread steps its own run, then the workers'
+    /// results are copied in.
+    fn step_all<T: ObsElem>(&mut self, mut out: Outputs<'_, T>, m: usize, per_env: usize) -> Result<(), EngineError> {
+        let own = self.envs.len();
+        let mut first = own;
+        for w in &self.workers {
+            let mut slot = w.slot();
+            let k = slot.envs.len();
+            slot.actions.copy_from_slice(&self.actions[first * m..(first + k) * m]);
+            drop(slot);
+            w.start();
+            first += k;
+        }
+        let result = out.step_own(&mut self.envs, &self.actions[..own * m], m, per_env);
+        let mut first = own;
+        let mut failure = result.err();
+        for w in &self.workers {
+            w.wait();
+            let mut slot = w.slot();
+            if let Some(e) = slot.error.take() {
+                failure.get_or_insert(e);
+            }
+            out.copy_from(&slot, first, m, per_env);
+            first += slot.envs.len();
+        }
+        failure.map_or(Ok(()), Err)
     }
 }
 
@@ -207,21 +215,33 @@ impl PyVectorEnv {
                     "the raw representation has no vector form; use an array representation",
                 ));
             }
-            let envs = (0..num_envs)
+            let mut envs = (0..num_envs)
                 .map(|i| EnvCore::new(&args, seed.wrapping_add(i as u64)))
                 .collect::<Result<Vec<_>, _>>()
                 .map_err(engine_error)?;
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(num_threads)
-                .build()
-                .map_err(|e| PyValueError::new_err(format!("cannot start {num_threads} threads: {e}")))?;
-            Ok(PyVectorEnv { envs, pool, actions: Vec::new() })
+            let threads = if num_threads == 0 {
+                std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+            } else {
+                num_threads
+            };
+            // One contiguous run per thread; the calling thread keeps the first.
+            let run = num_envs.div_ceil(threads.max(1));
+            let mut rest = envs.split_off(run.min(num_envs));
+            let mut workers = Vec::new();
+            while !rest.is_empty() {
+                let tail = rest.split_off(run.min(rest.len()));
+                let worker = Worker::spawn(rest)
+                    .map_err(|e| PyValueError::new_err(format!("cannot start {threads} threads: {e}")))?;
+                workers.push(worker);
+                rest = tail;
+            }
+            Ok(PyVectorEnv { envs, workers, actions: Vec::new() })
         })
     }
 
     #[getter]
     fn num_envs(&self) -> usize {
-        self.envs.len()
+        self.envs.len() + self.workers.iter().map(|w| w.slot().envs.len()).sum::<usize>()
     }
 
     #[getter]
@@ -247,27 +267,29 @@ impl PyVectorEnv {
     #[pyo3(signature = (observations, seed = None))]
     fn reset(&mut self, py: Python<'_>, observations: &Bound<'_, PyAny>, seed: Option<u64>) -> PyResult<()> {
         guard(|| {
-            let per_env = self.per_env_obs();
-            let mut array = obs_buffer(observations, self.dtype(), per_env * self.envs.len())?;
+            let per_env = self.per_env_obs().max(1);
+            let n = self.num_envs();
+            let mut array = obs_buffer(observations, self.dtype(), per_env * n)?;
             let out = slice(&mut array)?;
-            let envs = &mut self.envs;
-            let pool = &self.pool;
-            let per_env = per_env.max(1);
+            // A reset happens once per run (episodes reset inside `step`): it runs serially.
+            let (own, workers) = (&mut self.envs, &self.workers);
             py.detach(|| {
-                pool.install(|| match out {
+                let mut guards: Vec<_> = workers.iter().map(Worker::slot).collect();
+                let envs = own.iter_mut().chain(guards.iter_mut().flat_map(|g| g.envs.iter_mut()));
+                match out {
                     Slice::F32(s) => {
-                        envs.par_iter_mut().zip(s.par_chunks_mut(per_env)).enumerate().for_each(|(i, (e, o))| {
+                        for (i, (e, o)) in envs.zip(s.chunks_mut(per_env)).enumerate() {
                             e.reset(seed.map(|s| s.wrapping_add(i as u64)));
                             e.write_observations(ObsOut::F32(o), true);
-                        })
+                        }
                     }
                     Slice::U8(s) => {
-                        envs.par_iter_mut().zip(s.par_chunks_mut(per_env)).enumerate().for_each(|(i, (e, o))| {
+                        for (i, (e, o)) in envs.zip(s.chunks_mut(per_env)).enumerate() {
                             e.reset(seed.map(|s| s.wrapping_add(i as u64)));
                             e.write_observations(ObsOut::U8(o), true);
-                        })
+                        }
                     }
-                })
+                }
             });
             Ok(())
         })
@@ -286,7 +308,7 @@ impl PyVectorEnv {
         final_observations: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<()> {
         guard(|| {
-            let n = self.envs.len();
+            let n = self.num_envs();
             let m = self.envs[0].env.num_controllers();
             let limit = self.envs[0].env.action_set().len();
             if actions.shape() != [n, m] {
@@ -310,25 +332,29 @@ impl PyVectorEnv {
                     }
                 }
             }
-            let per_env = self.per_env_obs();
+            let per_env = self.per_env_obs().max(1);
             let mut array = obs_buffer(observations, self.dtype(), per_env * n)?;
             let mut finals = final_observations.map(|f| obs_buffer(f, self.dtype(), per_env * n)).transpose()?;
             let out = slice(&mut array)?;
             let final_out = finals.as_mut().map(slice).transpose()?;
-            let batch = Batch {
-                actions: &self.actions,
-                rewards: rewards.as_slice_mut().map_err(|_| contiguous())?,
-                terminated: terminated.as_slice_mut().map_err(|_| contiguous())?,
-                truncated: truncated.as_slice_mut().map_err(|_| contiguous())?,
-                controllers: m,
-                per_env: per_env.max(1),
-            };
-            let (envs, pool) = (&mut self.envs, &self.pool);
+            let rewards = rewards.as_slice_mut().map_err(|_| contiguous())?;
+            let terminated = terminated.as_slice_mut().map_err(|_| contiguous())?;
+            let truncated = truncated.as_slice_mut().map_err(|_| contiguous())?;
             let result = py.detach(|| match (out, final_out) {
-                (Slice::F32(o), Some(Slice::F32(f))) => batch.run(envs, pool, o, Some(f)),
-                (Slice::F32(o), _) => batch.run(envs, pool, o, None),
-                (Slice::U8(o), Some(Slice::U8(f))) => batch.run(envs, pool, o, Some(f)),
-                (Slice::U8(o), _) => batch.run(envs, pool, o, None),
+                (Slice::F32(obs), finals) => {
+                    let finals = match finals {
+                        Some(Slice::F32(f)) => Some(f),
+                        _ => None,
+                    };
+                    self.step_all(Outputs { rewards, terminated, truncated, obs, finals }, m, per_env)
+                }
+                (Slice::U8(obs), finals) => {
+                    let finals = match finals {
+                        Some(Slice::U8(f)) => Some(f),
+                        _ => None,
+                    };
+                    self.step_all(Outputs { rewards, terminated, truncated, obs, finals }, m, per_env)
+                }
             });
             result.map_err(engine_error)
         })

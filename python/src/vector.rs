@@ -328,7 +328,9 @@ impl PyVectorEnv {
                 match u32::try_from(a) {
                     Ok(v) if (v as usize) < limit => self.actions.push(v),
                     _ => {
-                        return Err(PyValueError::new_err(format!("action {a} is outside the action set (0..{limit})")));
+                        return Err(PyValueError::new_err(format!(
+                            "action {a} is outside the action set (0..{limit})"
+                        )));
                     }
                 }
             }

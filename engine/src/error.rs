@@ -36,6 +36,20 @@ pub enum EngineError {
         /// The set's size.
         len: usize,
     },
+    /// A snapshot taken from an environment on another scenario.
+    #[error("this snapshot was taken on another scenario ({snapshot}); this environment plays {env}")]
+    SnapshotScenario {
+        /// Name of the snapshot's scenario.
+        snapshot: String,
+        /// Name of this environment's scenario.
+        env: String,
+    },
+    /// Bytes that are not a readable snapshot (truncated, corrupted, or from a newer touchline).
+    #[error("not a valid touchline snapshot: {reason}")]
+    InvalidSnapshot {
+        /// What is wrong.
+        reason: String,
+    },
     /// `step` after the episode ended; call `reset` first.
     #[error("the episode has ended; call reset() before step()")]
     EpisodeOver,

@@ -44,7 +44,7 @@ mod rng;
 pub mod rules;
 mod scenario;
 
-pub use env::{Env, EnvConfig, StepInfo, StepOutcome};
+pub use env::{Env, EnvConfig, Snapshot, StepInfo, StepOutcome};
 pub use error::EngineError;
 pub use game::{Action, ActionSet, GameMode, Match};
 pub use geometry::Side;

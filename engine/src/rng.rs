@@ -6,7 +6,7 @@ use rand_pcg::Pcg32;
 
 /// A seeded random stream with the few draws the engine needs. In deterministic scenarios the
 /// noise amplitude is zero, so [`MatchRng::noise`] returns 0 whatever the stream holds.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub(crate) struct MatchRng {
     stream: Pcg32,
     noise_scale: f32,

@@ -2,7 +2,7 @@
 //! 0.6, hard 0.95; grf.md §2.3, §7.6).
 
 /// The parameters a team's θ sets. All are smooth in θ.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Difficulty {
     /// θ itself.
     pub theta: f32,

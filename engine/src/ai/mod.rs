@@ -64,7 +64,7 @@ impl MatchView<'_> {
 }
 
 /// A player's current plan; turned into a [`PlayerInput`] every tick.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Plan {
     /// Where to go (m, global frame).
     pub target: Vec2,
@@ -105,7 +105,7 @@ pub struct Analysis {
 }
 
 /// One team's built-in AI.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub struct TeamAi {
     side: Side,
     difficulty: Difficulty,

@@ -7,7 +7,7 @@ use crate::geometry::Side;
 use crate::scenario::Scenario;
 
 /// What the end conditions remember between steps.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default, serde::Serialize, serde::Deserialize)]
 pub(crate) struct EndTracker {
     previous_mode: Option<GameMode>,
     previous_owner: Option<Side>,

@@ -4,12 +4,14 @@
 mod config;
 mod control;
 mod end;
+mod snapshot;
 mod sticky;
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 pub use config::EnvConfig;
+pub use snapshot::Snapshot;
 pub use sticky::{Press, StickyState};
 
 use crate::error::EngineError;
@@ -57,7 +59,7 @@ pub struct StepInfo {
 }
 
 /// One agent controller: a side and the player it drives.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
 struct Controller {
     side: Side,
     sticky: StickyState,
@@ -86,6 +88,8 @@ pub struct Env {
     score_diff: i32,
     /// GRF's anti-stalling counter: steps in a row that ended with a set piece pending.
     waiting_for_game: u32,
+    /// Identifies scenario and configuration, so that snapshots restore only where they belong.
+    fingerprint: u64,
 }
 
 impl Env {
@@ -147,7 +151,9 @@ impl Env {
             done: false,
             score_diff: 0,
             waiting_for_game: 0,
+            fingerprint: 0,
         };
+        env.fingerprint = env.compute_fingerprint();
         env.begin(0);
         Ok(env)
     }

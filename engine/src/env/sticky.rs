@@ -16,7 +16,7 @@ pub enum Press {
 }
 
 /// One controller's virtual gamepad, in the global frame.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct StickyState {
     /// Held direction: index into [`DIRECTIONS`].
     pub direction: Option<u8>,

@@ -5,7 +5,7 @@
 use glam::Vec2;
 
 /// The kinds of kick a player can make (grf.md §5.4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub enum KickKind {
     /// Ground pass to a team-mate.
     ShortPass,
@@ -18,7 +18,7 @@ pub enum KickKind {
 }
 
 /// Where a kick goes.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum KickTarget {
     /// A point on the pitch (m, global frame); for shots a point on the goal line. The AI aims so.
     Point(Vec2),
@@ -28,7 +28,7 @@ pub enum KickTarget {
 }
 
 /// A kick request: a kind, an aim and a power in [0, 1] (from the button gauge for agents).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Kick {
     /// Pass or shot.
     pub kind: KickKind,
@@ -41,7 +41,7 @@ pub struct Kick {
 }
 
 /// One tick's instruction for one player.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct PlayerInput {
     /// Desired velocity (m/s, global frame). The player accelerates towards it within his limits.
     pub velocity: Vec2,

@@ -25,7 +25,7 @@ use crate::rules::{Restart, Stoppage};
 use crate::scenario::{PlayerEntry, Scenario};
 
 /// Whether the ball is in play or the match is waiting for a restart.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Phase {
     /// Ball in play (possibly a set piece waiting for its taker: see [`Match::mode`]).
     Play,
@@ -45,13 +45,15 @@ pub(crate) const GOAL_DEAD_TICKS: u16 = 60;
 pub(crate) const OUT_DEAD_TICKS: u16 = 100;
 
 /// The world: ball, both teams, score, game mode and referee state, and the built-in AI.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub struct Match {
     pub(crate) players: Vec<Player>,
     pub(crate) ranges: [Range<usize>; 2],
     pub(crate) formations: [Vec<PlayerEntry>; 2],
     pub(crate) difficulty: [f32; 2],
     pub(crate) ball: Ball,
+    /// Fixed geometry, shared by every match: not part of a snapshot.
+    #[serde(skip, default = "PitchColliders::shared")]
     pub(crate) colliders: Arc<PitchColliders>,
     /// Player (global index) with the ball at his feet.
     pub(crate) owner: Option<usize>,

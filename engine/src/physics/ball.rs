@@ -19,7 +19,7 @@ pub const ROLL_VISCOUS: f32 = 0.15;
 const SETTLE_SPEED: f32 = 0.8;
 
 /// Ball state in the engine frame (m, m/s).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Ball {
     /// Centre position (m); z = [`BALL_RADIUS`] when resting on the grass.
     pub position: Vec3,

@@ -7,7 +7,7 @@ use crate::game::Kick;
 use crate::geometry::Side;
 
 /// A player on the pitch (engine frame, SI units).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Player {
     /// Team.
     pub side: Side,

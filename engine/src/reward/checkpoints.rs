@@ -16,7 +16,7 @@ pub fn checkpoint_threshold(k: u8) -> f32 {
 }
 
 /// Collected checkpoints of one controller, for one episode.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct CheckpointTracker {
     collected: u8,
 }

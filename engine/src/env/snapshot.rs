@@ -1,0 +1,175 @@
+//! Snapshots of an episode: the whole dynamic state of an [`Env`] (match, controllers, sticky
+//! actions, reward and end-condition bookkeeping, RNG, episode counters) and nothing else, so that
+//! restoring it and replaying the same actions gives the same trajectory bit for bit. In memory a
+//! snapshot is a plain copy; [`Snapshot::to_bytes`] gives a compact, versioned, checksummed form
+//! that loads in another process.
+
+use serde::{Deserialize, Serialize};
+
+use super::end::EndTracker;
+use super::{Controller, Env, StepInfo};
+use crate::error::EngineError;
+use crate::game::Match;
+use crate::obs::RawObservation;
+use crate::reward::CheckpointTracker;
+
+/// Bytes every serialised snapshot starts with.
+const MAGIC: &[u8; 6] = b"TLSNAP";
+/// Header: magic, format version (u16), scenario fingerprint (u64), payload checksum (u64).
+const HEADER: usize = 6 + 2 + 8 + 8;
+
+/// Everything in an [`Env`] that changes while it plays.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub(crate) struct EnvState {
+    seed: u64,
+    episode: u64,
+    fresh: bool,
+    game: Match,
+    controllers: Vec<Controller>,
+    controlled: Vec<usize>,
+    observations: Vec<RawObservation>,
+    rewards: Vec<f32>,
+    checkpoints: Vec<CheckpointTracker>,
+    end: EndTracker,
+    info: StepInfo,
+    steps: u32,
+    done: bool,
+    score_diff: i32,
+    waiting_for_game: u32,
+}
+
+/// A saved moment of an episode; see [`Env::snapshot`] and [`Env::restore`].
+#[derive(Clone, Debug)]
+pub struct Snapshot {
+    fingerprint: u64,
+    scenario: String,
+    state: Box<EnvState>,
+}
+
+/// FNV-1a over bytes: a fingerprint and checksum that is the same on every platform.
+fn fnv(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+}
+
+impl Snapshot {
+    /// Version of the byte format written by [`Snapshot::to_bytes`]; bumped whenever the state's
+    /// layout changes. Reading another version is an error.
+    pub const FORMAT_VERSION: u16 = 1;
+
+    /// Name of the scenario the snapshot was taken on.
+    pub fn scenario(&self) -> &str {
+        &self.scenario
+    }
+
+    /// The serialised form: a 24-byte header (magic `TLSNAP`, format version, scenario
+    /// fingerprint, checksum) and the state in postcard's compact encoding. About 5–8 KiB for a
+    /// full 11-v-11 match.
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let payload = postcard::to_allocvec(&(&self.scenario, &*self.state)).unwrap_or_default();
+        let mut out = Vec::with_capacity(HEADER + payload.len());
+        out.extend_from_slice(MAGIC);
+        out.extend_from_slice(&Self::FORMAT_VERSION.to_le_bytes());
+        out.extend_from_slice(&self.fingerprint.to_le_bytes());
+        out.extend_from_slice(&fnv(&payload).to_le_bytes());
+        out.extend_from_slice(&payload);
+        out
+    }
+
+    /// Reads bytes written by [`Snapshot::to_bytes`].
+    ///
+    /// # Errors
+    /// [`EngineError::InvalidSnapshot`] for anything else: wrong magic, another format version,
+    /// a checksum mismatch (corruption), truncation or undecodable contents.
+    pub fn from_bytes(bytes: &[u8]) -> Result<Snapshot, EngineError> {
+        let bad = |reason: String| EngineError::InvalidSnapshot { reason };
+        if bytes.len() < HEADER || &bytes[..6] != MAGIC {
+            return Err(bad("it does not start with a touchline snapshot header".into()));
+        }
+        let word = |at: usize| {
+            let mut b = [0u8; 8];
+            b.copy_from_slice(&bytes[at..at + 8]);
+            u64::from_le_bytes(b)
+        };
+        let version = u16::from_le_bytes([bytes[6], bytes[7]]);
+        if version != Self::FORMAT_VERSION {
+            return Err(bad(format!(
+                "format version {version}; this touchline reads version {}",
+                Self::FORMAT_VERSION
+            )));
+        }
+        let (fingerprint, checksum) = (word(8), word(16));
+        let payload = &bytes[HEADER..];
+        if fnv(payload) != checksum {
+            return Err(bad("the checksum does not match: the bytes are truncated or corrupted".into()));
+        }
+        let (scenario, state): (String, EnvState) =
+            postcard::from_bytes(payload).map_err(|e| bad(format!("cannot decode the state: {e}")))?;
+        Ok(Snapshot { fingerprint, scenario, state: Box::new(state) })
+    }
+}
+
+impl Env {
+    /// Identifies the scenario and configuration a snapshot belongs to (computed once, in
+    /// [`Env::with_config`]).
+    pub(crate) fn compute_fingerprint(&self) -> u64 {
+        let bytes = postcard::to_allocvec(&(&self.scenario, &self.config)).unwrap_or_default();
+        fnv(&bytes)
+    }
+
+    /// Saves the whole dynamic state of the episode.
+    pub fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            fingerprint: self.fingerprint,
+            scenario: self.scenario.name.clone(),
+            state: Box::new(EnvState {
+                seed: self.seed,
+                episode: self.episode,
+                fresh: self.fresh,
+                game: self.game.clone(),
+                controllers: self.controllers.clone(),
+                controlled: self.controlled.clone(),
+                observations: self.observations.clone(),
+                rewards: self.rewards.clone(),
+                checkpoints: self.checkpoints.clone(),
+                end: self.end,
+                info: self.info,
+                steps: self.steps,
+                done: self.done,
+                score_diff: self.score_diff,
+                waiting_for_game: self.waiting_for_game,
+            }),
+        }
+    }
+
+    /// Puts the env back in the state of `snapshot`; stepping on with the same actions then
+    /// repeats the trajectory that followed it, bit for bit.
+    ///
+    /// # Errors
+    /// [`EngineError::SnapshotScenario`] when the snapshot was taken on another scenario or
+    /// configuration; the env is unchanged.
+    pub fn restore(&mut self, snapshot: &Snapshot) -> Result<(), EngineError> {
+        if snapshot.fingerprint != self.fingerprint {
+            return Err(EngineError::SnapshotScenario {
+                snapshot: snapshot.scenario.clone(),
+                env: self.scenario.name.clone(),
+            });
+        }
+        let s = &*snapshot.state;
+        self.seed = s.seed;
+        self.episode = s.episode;
+        self.fresh = s.fresh;
+        self.game.clone_from(&s.game);
+        self.controllers.clone_from(&s.controllers);
+        self.controlled.clone_from(&s.controlled);
+        self.observations.clone_from(&s.observations);
+        self.rewards.clone_from(&s.rewards);
+        self.checkpoints.clone_from(&s.checkpoints);
+        self.end = s.end;
+        self.info = s.info;
+        self.steps = s.steps;
+        self.done = s.done;
+        self.score_diff = s.score_diff;
+        self.waiting_for_game = s.waiting_for_game;
+        Ok(())
+    }
+}

@@ -69,5 +69,24 @@ fn memory(_: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, steps, memory);
+fn snapshots(c: &mut Criterion) {
+    let v2 = EnvConfig { action_set: ActionSet::V2, ..EnvConfig::default() };
+    let mut env = Env::with_config(scenario("11_vs_11_easy_stochastic"), v2, 0).expect("env");
+    for _ in 0..500 {
+        env.step(&[Action::BuiltinAi]).expect("step");
+    }
+    let snapshot = env.snapshot();
+    println!("snapshot/11_vs_11: {} bytes serialised", snapshot.to_bytes().len());
+    let mut group = c.benchmark_group("snapshot");
+    group.bench_function("11_vs_11/snapshot", |b| b.iter(|| black_box(env.snapshot())));
+    group.bench_function("11_vs_11/restore", |b| b.iter(|| env.restore(black_box(&snapshot)).expect("restore")));
+    group.bench_function("11_vs_11/to_bytes", |b| b.iter(|| black_box(snapshot.to_bytes())));
+    let bytes = snapshot.to_bytes();
+    group.bench_function("11_vs_11/from_bytes", |b| {
+        b.iter(|| black_box(touchline_engine::Snapshot::from_bytes(black_box(&bytes)).expect("bytes")))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, steps, memory, snapshots);
 criterion_main!(benches);

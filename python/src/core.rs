@@ -4,7 +4,7 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use touchline_engine::obs::{FrameStack, encode_simple115, encode_simple115v2, encode_smm};
-use touchline_engine::{ActionSet, EngineError, Env, EnvConfig, Scenario, StepOutcome};
+use touchline_engine::{ActionSet, EngineError, Env, EnvConfig, Scenario, Snapshot, StepOutcome};
 
 /// Frames kept by `stacked=True` (GRF's FrameStack(4), grf.md §4.4).
 const STACK: usize = 4;
@@ -241,5 +241,42 @@ impl EnvCore {
             // The callers allocate the buffer from `dtype()`, so the kinds always match.
             (_, _) => {}
         }
+    }
+}
+
+impl EnvCore {
+    /// The env's snapshot bytes followed by the frame stacks: `[u64 length][snapshot][stacks]`.
+    pub(crate) fn state_bytes(&self) -> Vec<u8> {
+        let snapshot = self.env.snapshot().to_bytes();
+        let stacks = postcard::to_allocvec(&(&self.stacks_f32, &self.stacks_u8)).unwrap_or_default();
+        let mut out = Vec::with_capacity(8 + snapshot.len() + stacks.len());
+        out.extend_from_slice(&(snapshot.len() as u64).to_le_bytes());
+        out.extend_from_slice(&snapshot);
+        out.extend_from_slice(&stacks);
+        out
+    }
+
+    /// Restores bytes from [`EnvCore::state_bytes`]; on any error nothing changes.
+    pub(crate) fn restore_bytes(&mut self, bytes: &[u8]) -> Result<(), EngineError> {
+        let bad = |reason: &str| EngineError::InvalidSnapshot { reason: reason.into() };
+        let (len, rest) = bytes.split_at_checked(8).ok_or_else(|| bad("too short"))?;
+        let mut word = [0u8; 8];
+        word.copy_from_slice(len);
+        let len = usize::try_from(u64::from_le_bytes(word)).map_err(|_| bad("bad length"))?;
+        let (snapshot, stacks) = rest.split_at_checked(len).ok_or_else(|| bad("truncated"))?;
+        let snapshot = Snapshot::from_bytes(snapshot)?;
+        type Stacks = (Vec<FrameStack<f32>>, Vec<FrameStack<u8>>);
+        let (f, u): Stacks = postcard::from_bytes(stacks).map_err(|_| bad("the frame stacks do not decode"))?;
+        let fits = f.len() == self.stacks_f32.len()
+            && u.len() == self.stacks_u8.len()
+            && f.iter().zip(&self.stacks_f32).all(|(a, b)| b.same_shape(a))
+            && u.iter().zip(&self.stacks_u8).all(|(a, b)| b.same_shape(a));
+        if !fits {
+            return Err(bad("the frame stacks belong to another representation"));
+        }
+        self.env.restore(&snapshot)?;
+        self.stacks_f32 = f;
+        self.stacks_u8 = u;
+        Ok(())
     }
 }

@@ -3,7 +3,7 @@
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyTuple};
+use pyo3::types::{PyBytes, PyDict, PyList, PyTuple};
 use touchline_engine::{Side, StepInfo};
 
 use crate::convert::raw_to_dict;
@@ -167,6 +167,16 @@ impl PyEnv {
             let info = info_dict(py, self.core.env.info())?;
             Ok((obs, rewards, outcome.terminated, outcome.truncated, info))
         })
+    }
+
+    /// The whole state of the episode as bytes (engine snapshot plus stacked frames).
+    fn get_state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
+        guard(|| Ok(PyBytes::new(py, &self.core.state_bytes())))
+    }
+
+    /// Restores a state from `get_state` of an env built with the same arguments.
+    fn set_state(&mut self, state: &[u8]) -> PyResult<()> {
+        guard(|| self.core.restore_bytes(state).map_err(engine_error))
     }
 
     fn raw_observations<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {

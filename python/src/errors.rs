@@ -39,6 +39,9 @@ pub(crate) fn engine_error(err: EngineError) -> PyErr {
     match err {
         EngineError::EpisodeOver => PyRuntimeError::new_err(err.to_string()),
         EngineError::InvalidScenario { .. } => ScenarioError::new_err(err.to_string()),
+        EngineError::InvalidSnapshot { .. } | EngineError::SnapshotScenario { .. } => {
+            PyValueError::new_err(err.to_string())
+        }
         _ => PyValueError::new_err(err.to_string()),
     }
 }

@@ -98,6 +98,15 @@ class Env:
         """
     def raw_observations(self) -> list[dict[str, Any]]:
         """The raw observation of each controller (GRF's dict of numpy arrays, grf.md §3.1)."""
+    def get_state(self) -> bytes:
+        """The whole state of the episode: engine snapshot plus stacked frames."""
+    def set_state(self, state: bytes) -> None:
+        """Restores `get_state` bytes of an env built with the same arguments.
+
+        Raises:
+            ValueError: corrupted or truncated bytes, another scenario, representation or
+                format version.
+        """
 
 @final
 class VectorEnv:

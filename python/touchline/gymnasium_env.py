@@ -123,6 +123,19 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
         render_mode: str | None = None,
     ) -> None:
         _arguments.render_mode_argument(render_mode)
+        # Kept to rebuild the env when it is unpickled.
+        self._init_args: dict[str, Any] = {
+            "scenario": scenario,
+            "representation": representation,
+            "rewards": rewards,
+            "stacked": stacked,
+            "number_of_left_players_agent_controls": number_of_left_players_agent_controls,
+            "number_of_right_players_agent_controls": number_of_right_players_agent_controls,
+            "seed": seed,
+            "channel_dimensions": channel_dimensions,
+            "action_set": action_set,
+            "render_mode": render_mode,
+        }
         left, right = _arguments.controls_argument(
             number_of_left_players_agent_controls, number_of_right_players_agent_controls
         )
@@ -153,6 +166,33 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
             if self._single
             else spaces.MultiDiscrete([self._action_count] * self.num_controllers)
         )
+
+    def get_state(self) -> bytes:
+        """The whole state of the episode as bytes (GRF's `get_state`, grf.md §7.9).
+
+        The match (physics, players, referee, AI, random stream), sticky actions, reward and
+        end-condition bookkeeping, episode counters and stacked frames: restoring it with
+        `set_state` and replaying the same actions repeats the trajectory bit for bit. A few KiB
+        (GRF: up to 10 MB).
+        """
+        return self._core.get_state()
+
+    def set_state(self, state: bytes) -> None:
+        """Restores a state from `get_state` of an env made with the same arguments.
+
+        Raises:
+            ValueError: bytes that are not a state of this scenario and representation
+                (corrupted, truncated, another scenario or another touchline format version).
+        """
+        self._core.set_state(bytes(state))
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickling keeps the constructor arguments and the episode state."""
+        return {"args": self._init_args, "state": self._core.get_state()}
+
+    def __setstate__(self, saved: dict[str, Any]) -> None:
+        self.__init__(**saved["args"])  # type: ignore[misc]
+        self._core.set_state(saved["state"])
 
     @property
     def scenario_name(self) -> str:

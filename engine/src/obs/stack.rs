@@ -5,8 +5,9 @@
 //! and stacks to `(H, W, k·C)` with, per pixel, `[t-k+1 (C values), …, t-1, t]`; a flat `(115,)`
 //! vector has `channels = 115` (one "pixel") and stacks to `(115·k,)` = `[t-k+1 block, …, t]`.
 
-/// A ring buffer of the last `k` frames of `frame_len` values each, allocated once.
-#[derive(Clone, Debug)]
+/// A ring buffer of the last `k` frames of `frame_len` values each, allocated once. Serialisable,
+/// so that a saved environment state can carry its stacked frames (GRF saves its deque too).
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub struct FrameStack<T> {
     /// `k` slots of `frame_len` values.
     frames: Vec<T>,
@@ -18,6 +19,16 @@ pub struct FrameStack<T> {
 }
 
 impl<T: Copy + Default> FrameStack<T> {
+    /// Whether `other` (for instance one read back from bytes) has this stack's shape and is
+    /// internally consistent, so that it can replace this one.
+    pub fn same_shape(&self, other: &FrameStack<T>) -> bool {
+        other.frame_len == self.frame_len
+            && other.channels == self.channels
+            && other.k == self.k
+            && other.frames.len() == self.frames.len()
+            && other.oldest < other.k
+    }
+
     /// A stack of `k` frames of `frame_len` values, each frame viewed as `(frame_len / channels,
     /// channels)`; all slots start at `T::default()`. GRF always uses `k = 4`.
     ///

@@ -15,7 +15,7 @@ dicts. The reward is a float for one player and a float32 array (M,) for several
 
 Not available yet (a `ValueError` says so when asked for): rendering (`render=True`, `pixels`,
 `pixels_gray`), dumps and videos (`write_goal_dumps`, `write_full_episode_dumps`, `write_video`),
-`extra_players`, `action_set="full"`, and `get_state`/`set_state`. GRF's `control_all_players`
+`extra_players` and `action_set="full"`. GRF's `control_all_players`
 reduction (`MultiAgentToSingleAgent`) is not applied: in such a scenario the env returns every
 controllable player.
 """
@@ -132,13 +132,13 @@ class FootballEnv:
     def close(self) -> None:
         """Nothing to release."""
 
-    def get_state(self, to_pickle: Any = None) -> Any:
-        """Not available yet: touchline cannot snapshot a match."""
-        raise NotImplementedError("get_state/set_state are not available in touchline yet")
+    def get_state(self, to_pickle: Any = None) -> bytes:
+        """The whole state of the match as bytes (GRF's `get_state`; `to_pickle` is ignored)."""
+        return self._core.get_state()
 
-    def set_state(self, state: Any) -> Any:
-        """Not available yet: touchline cannot snapshot a match."""
-        raise NotImplementedError("get_state/set_state are not available in touchline yet")
+    def set_state(self, state: bytes) -> None:
+        """Restores a state from `get_state` of an env created with the same arguments."""
+        self._core.set_state(bytes(state))
 
     def _shape(self, observation: Any) -> Any:
         if self._single:

@@ -11,6 +11,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 pub use config::EnvConfig;
+use snapshot::EnvState;
 pub use snapshot::Snapshot;
 pub use sticky::{Press, StickyState};
 
@@ -58,7 +59,8 @@ pub struct StepInfo {
     pub episode: u64,
 }
 
-/// One agent controller: a side and the player it drives.
+/// One agent controller: its side and its virtual gamepad (the player it drives is in
+/// `EnvState::controlled`).
 #[derive(Clone, Copy, Debug, Serialize, Deserialize)]
 struct Controller {
     side: Side,
@@ -70,26 +72,12 @@ struct Controller {
 pub struct Env {
     scenario: Scenario,
     config: EnvConfig,
-    seed: u64,
-    episode: u64,
-    fresh: bool,
-    game: Match,
-    controllers: Vec<Controller>,
-    /// Player (index in team) driven by each controller, left controllers first.
-    controlled: Vec<usize>,
+    /// Every player controllable on a side has an agent: control never switches.
     fixed_control: [bool; 2],
-    observations: Vec<RawObservation>,
-    rewards: Vec<f32>,
-    checkpoints: Vec<CheckpointTracker>,
-    end: EndTracker,
-    info: StepInfo,
-    steps: u32,
-    done: bool,
-    score_diff: i32,
-    /// GRF's anti-stalling counter: steps in a row that ended with a set piece pending.
-    waiting_for_game: u32,
     /// Identifies scenario and configuration, so that snapshots restore only where they belong.
     fingerprint: u64,
+    /// Everything that changes while the env plays (what a [`Snapshot`] saves).
+    state: EnvState,
 }
 
 impl Env {
@@ -136,22 +124,24 @@ impl Env {
             fixed_control: [agents[0] == controllable[0], agents[1] == controllable[1]],
             scenario,
             config,
-            seed,
-            episode: 0,
-            fresh: true,
-            game,
-            controllers,
-            controlled: vec![0; n],
-            observations: vec![RawObservation::default(); n],
-            rewards: vec![0.0; n],
-            checkpoints: vec![CheckpointTracker::default(); n],
-            end: EndTracker::default(),
-            info: StepInfo::default(),
-            steps: 0,
-            done: false,
-            score_diff: 0,
-            waiting_for_game: 0,
             fingerprint: 0,
+            state: EnvState {
+                seed,
+                episode: 0,
+                fresh: true,
+                game,
+                controllers,
+                controlled: vec![0; n],
+                observations: vec![RawObservation::default(); n],
+                rewards: vec![0.0; n],
+                checkpoints: vec![CheckpointTracker::default(); n],
+                end: EndTracker::default(),
+                info: StepInfo::default(),
+                steps: 0,
+                done: false,
+                score_diff: 0,
+                waiting_for_game: 0,
+            },
         };
         env.fingerprint = env.compute_fingerprint();
         env.begin(0);
@@ -160,41 +150,41 @@ impl Env {
 
     /// Starts the next episode (the same one again if no step was taken since the last start).
     pub fn reset(&mut self) {
-        let episode = if self.fresh { self.episode } else { self.episode + 1 };
+        let episode = if self.state.fresh { self.state.episode } else { self.state.episode + 1 };
         self.begin(episode);
     }
 
     /// Reseeds and starts episode 0 of the new seed (Gymnasium's `reset(seed=…)`).
     pub fn reset_with_seed(&mut self, seed: u64) {
-        self.seed = seed;
+        self.state.seed = seed;
         self.begin(0);
     }
 
     fn begin(&mut self, episode: u64) {
-        self.episode = episode;
-        self.fresh = true;
-        self.game = Match::new(&self.scenario, episode, self.seed);
-        self.steps = 0;
-        self.done = false;
-        self.score_diff = 0;
-        self.waiting_for_game = 0;
-        for c in &mut self.controllers {
+        self.state.episode = episode;
+        self.state.fresh = true;
+        self.state.game = Match::new(&self.scenario, episode, self.state.seed);
+        self.state.steps = 0;
+        self.state.done = false;
+        self.state.score_diff = 0;
+        self.state.waiting_for_game = 0;
+        for c in &mut self.state.controllers {
             c.sticky = StickyState::default();
         }
-        for t in &mut self.checkpoints {
+        for t in &mut self.state.checkpoints {
             *t = CheckpointTracker::default();
         }
         for side in Side::BOTH {
             let (start, len) = self.controller_span(side);
-            control::initial(&self.game, side, &mut self.controlled[start..start + len]);
+            control::initial(&self.state.game, side, &mut self.state.controlled[start..start + len]);
         }
-        self.rewards.fill(0.0);
+        self.state.rewards.fill(0.0);
         self.refresh_observations();
-        self.end.reset(self.game.owner().map(|o| o.0));
-        self.info = StepInfo {
+        self.state.end.reset(self.state.game.owner().map(|o| o.0));
+        self.state.info = StepInfo {
             score: [0, 0],
             steps_left: self.steps_left(),
-            game_mode: self.game.mode(),
+            game_mode: self.state.game.mode(),
             score_reward: 0.0,
             checkpoint_reward: 0.0,
             steps: 0,
@@ -204,15 +194,15 @@ impl Env {
 
     /// First controller index and number of controllers of `side`.
     fn controller_span(&self, side: Side) -> (usize, usize) {
-        let left = self.controllers.iter().filter(|c| c.side == Side::Left).count();
+        let left = self.state.controllers.iter().filter(|c| c.side == Side::Left).count();
         match side {
             Side::Left => (0, left),
-            Side::Right => (left, self.controllers.len() - left),
+            Side::Right => (left, self.state.controllers.len() - left),
         }
     }
 
     fn steps_left(&self) -> u32 {
-        (self.scenario.game_duration + 1).saturating_sub(self.steps)
+        (self.scenario.game_duration + 1).saturating_sub(self.state.steps)
     }
 
     /// Decodes action indices of the configured action set and steps.
@@ -220,8 +210,8 @@ impl Env {
     /// # Errors
     /// As [`Env::step`], plus [`EngineError::UnknownAction`] for an index outside the set.
     pub fn step_indices(&mut self, actions: &[u32]) -> Result<StepOutcome, EngineError> {
-        if actions.len() != self.controllers.len() {
-            return Err(EngineError::ActionCount { expected: self.controllers.len(), got: actions.len() });
+        if actions.len() != self.state.controllers.len() {
+            return Err(EngineError::ActionCount { expected: self.state.controllers.len(), got: actions.len() });
         }
         // At most 22 controllers: decode on the stack, no allocation.
         let mut decoded = [Action::Idle; 22];
@@ -240,65 +230,74 @@ impl Env {
     /// [`EngineError::ActionCount`] when `actions.len()` differs from [`Env::num_controllers`];
     /// [`EngineError::EpisodeOver`] after the episode ended.
     pub fn step(&mut self, actions: &[Action]) -> Result<StepOutcome, EngineError> {
-        if actions.len() != self.controllers.len() {
-            return Err(EngineError::ActionCount { expected: self.controllers.len(), got: actions.len() });
+        if actions.len() != self.state.controllers.len() {
+            return Err(EngineError::ActionCount { expected: self.state.controllers.len(), got: actions.len() });
         }
-        if self.done {
+        if self.state.done {
             return Err(EngineError::EpisodeOver);
         }
-        self.fresh = false;
+        self.state.fresh = false;
         for (i, &action) in actions.iter().enumerate() {
             let action = self.anti_stalling(i, action);
             self.apply_action(i, action);
         }
         let mut ticks = 0;
         for _ in 0..TICKS_PER_STEP {
-            self.game.tick();
+            self.state.game.tick();
             ticks += 1;
-            if !self.game.in_play() {
-                while !self.game.in_play() && ticks < MAX_TICKS_PER_STEP {
-                    self.game.tick();
+            if !self.state.game.in_play() {
+                while !self.state.game.in_play() && ticks < MAX_TICKS_PER_STEP {
+                    self.state.game.tick();
                     ticks += 1;
                 }
                 break;
             }
         }
-        self.steps += 1;
-        self.waiting_for_game = if self.game.mode() == GameMode::Normal { 0 } else { self.waiting_for_game + 1 };
+        self.state.steps += 1;
+        self.state.waiting_for_game =
+            if self.state.game.mode() == GameMode::Normal { 0 } else { self.state.waiting_for_game + 1 };
         for side in Side::BOTH {
             let (start, len) = self.controller_span(side);
             control::update(
-                &self.game,
+                &self.state.game,
                 side,
-                &mut self.controlled[start..start + len],
+                &mut self.state.controlled[start..start + len],
                 self.fixed_control[side.index()],
             );
         }
         self.refresh_observations();
 
-        let score = self.game.score();
+        let score = self.state.game.score();
         let diff = score[0] as i32 - score[1] as i32;
-        let scoring = scoring_reward(self.score_diff, diff);
-        self.score_diff = diff;
+        let scoring = scoring_reward(self.state.score_diff, diff);
+        self.state.score_diff = diff;
         let mut checkpoint_total = 0.0;
-        for i in 0..self.controllers.len() {
-            let r = if self.controllers[i].side == Side::Left { scoring } else { -scoring };
-            let bonus =
-                if self.config.checkpoints { self.checkpoints[i].reward(r, &self.observations[i]) } else { 0.0 };
+        for i in 0..self.state.controllers.len() {
+            let r = if self.state.controllers[i].side == Side::Left { scoring } else { -scoring };
+            let bonus = if self.config.checkpoints {
+                self.state.checkpoints[i].reward(r, &self.state.observations[i])
+            } else {
+                0.0
+            };
             checkpoint_total += bonus;
-            self.rewards[i] = r + bonus;
+            self.state.rewards[i] = r + bonus;
         }
-        let terminated = self.end.terminated(&self.scenario, score, self.game.mode(), self.game.owner().map(|o| o.0));
-        let truncated = self.steps > self.scenario.game_duration;
-        self.done = terminated || truncated;
-        self.info = StepInfo {
+        let terminated = self.state.end.terminated(
+            &self.scenario,
+            score,
+            self.state.game.mode(),
+            self.state.game.owner().map(|o| o.0),
+        );
+        let truncated = self.state.steps > self.scenario.game_duration;
+        self.state.done = terminated || truncated;
+        self.state.info = StepInfo {
             score,
             steps_left: self.steps_left(),
-            game_mode: self.game.mode(),
+            game_mode: self.state.game.mode(),
             score_reward: scoring,
             checkpoint_reward: checkpoint_total,
-            steps: self.steps,
-            episode: self.episode,
+            steps: self.state.steps,
+            episode: self.state.episode,
         };
         Ok(StepOutcome { terminated, truncated })
     }
@@ -308,14 +307,14 @@ impl Env {
     /// is made to run towards the opponents' goal (and after 30 steps back).
     fn anti_stalling(&self, i: usize, action: Action) -> Action {
         use std::cmp::Ordering;
-        match self.waiting_for_game.cmp(&20) {
+        match self.state.waiting_for_game.cmp(&20) {
             Ordering::Less => action,
             Ordering::Equal => Action::ShortPass,
             Ordering::Greater => {
-                let c = &self.controllers[i];
-                if self.game.owner() == Some((c.side, self.controlled[i])) {
+                let c = &self.state.controllers[i];
+                if self.state.game.owner() == Some((c.side, self.state.controlled[i])) {
                     // In the controller's own frame "right" runs at the opponents' goal.
-                    if self.waiting_for_game < 30 { Action::Right } else { Action::Left }
+                    if self.state.waiting_for_game < 30 { Action::Right } else { Action::Left }
                 } else {
                     Action::Idle
                 }
@@ -324,16 +323,16 @@ impl Env {
     }
 
     fn apply_action(&mut self, i: usize, action: Action) {
-        let side = self.controllers[i].side;
+        let side = self.state.controllers[i].side;
         let global = if side == Side::Right { action.rotated() } else { action };
-        let press = self.controllers[i].sticky.apply(global);
-        let sticky = self.controllers[i].sticky;
-        let index = self.controlled[i];
+        let press = self.state.controllers[i].sticky.apply(global);
+        let sticky = self.state.controllers[i].sticky;
+        let index = self.state.controlled[i];
         if sticky.builtin {
-            self.game.set_agent_input(side, index, None);
+            self.state.game.set_agent_input(side, index, None);
             return;
         }
-        let player = &self.game.team(side)[index];
+        let player = &self.state.game.team(side)[index];
         let dir = sticky.direction_action().and_then(Action::direction_vector).unwrap_or(Vec2::ZERO);
         let speed = if sticky.dribble {
             DRIBBLE_SPEED
@@ -355,22 +354,22 @@ impl Env {
             },
             slide: press == Press::Slide,
         };
-        self.game.set_agent_input(side, index, Some(input));
+        self.state.game.set_agent_input(side, index, Some(input));
     }
 
     fn refresh_observations(&mut self) {
         let steps_left = self.steps_left();
-        for i in 0..self.controllers.len() {
-            let c = self.controllers[i];
-            let designated = control::designated(&self.game, c.side);
-            let active = Some(self.controlled[i]);
+        for i in 0..self.state.controllers.len() {
+            let c = self.state.controllers[i];
+            let designated = control::designated(&self.state.game, c.side);
+            let active = Some(self.state.controlled[i]);
             let designated = if self.fixed_control[c.side.index()] || self.controller_span(c.side).1 > 1 {
                 designated
             } else {
                 active
             };
-            self.observations[i].fill(
-                &self.game,
+            self.state.observations[i].fill(
+                &self.state.game,
                 c.side,
                 active,
                 designated,
@@ -382,37 +381,37 @@ impl Env {
 
     /// Observations after the last reset or step, one per controller (left controllers first).
     pub fn observations(&self) -> &[RawObservation] {
-        &self.observations
+        &self.state.observations
     }
 
     /// Rewards of the last step, one per controller (scoring + checkpoints).
     pub fn rewards(&self) -> &[f32] {
-        &self.rewards
+        &self.state.rewards
     }
 
     /// Information about the last step.
     pub fn info(&self) -> &StepInfo {
-        &self.info
+        &self.state.info
     }
 
     /// Number of agent controllers (the length of actions, observations and rewards).
     pub fn num_controllers(&self) -> usize {
-        self.controllers.len()
+        self.state.controllers.len()
     }
 
     /// Side of each controller, in order.
     pub fn controller_sides(&self) -> impl Iterator<Item = Side> + '_ {
-        self.controllers.iter().map(|c| c.side)
+        self.state.controllers.iter().map(|c| c.side)
     }
 
     /// Player (index in his team) each controller drives, in order.
     pub fn controlled_players(&self) -> &[usize] {
-        &self.controlled
+        &self.state.controlled
     }
 
     /// Whether the episode has ended (step now fails until reset).
     pub fn is_done(&self) -> bool {
-        self.done
+        self.state.done
     }
 
     /// The scenario.
@@ -432,11 +431,11 @@ impl Env {
 
     /// The match (read-only).
     pub fn game(&self) -> &Match {
-        &self.game
+        &self.state.game
     }
 
     /// The match, for tests and tools that set up situations by hand.
     pub fn game_mut(&mut self) -> &mut Match {
-        &mut self.game
+        &mut self.state.game
     }
 }

@@ -21,21 +21,25 @@ const HEADER: usize = 6 + 2 + 8 + 8;
 /// Everything in an [`Env`] that changes while it plays.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub(crate) struct EnvState {
-    seed: u64,
-    episode: u64,
-    fresh: bool,
-    game: Match,
-    controllers: Vec<Controller>,
-    controlled: Vec<usize>,
-    observations: Vec<RawObservation>,
-    rewards: Vec<f32>,
-    checkpoints: Vec<CheckpointTracker>,
-    end: EndTracker,
-    info: StepInfo,
-    steps: u32,
-    done: bool,
-    score_diff: i32,
-    waiting_for_game: u32,
+    pub(super) seed: u64,
+    /// 0-based episode index since the last seeding.
+    pub(super) episode: u64,
+    /// No step taken since the episode started (a reset then restarts the same episode).
+    pub(super) fresh: bool,
+    pub(super) game: Match,
+    pub(super) controllers: Vec<Controller>,
+    /// Player (index in team) driven by each controller, left controllers first.
+    pub(super) controlled: Vec<usize>,
+    pub(super) observations: Vec<RawObservation>,
+    pub(super) rewards: Vec<f32>,
+    pub(super) checkpoints: Vec<CheckpointTracker>,
+    pub(super) end: EndTracker,
+    pub(super) info: StepInfo,
+    pub(super) steps: u32,
+    pub(super) done: bool,
+    pub(super) score_diff: i32,
+    /// GRF's anti-stalling counter: steps in a row that ended with a set piece pending.
+    pub(super) waiting_for_game: u32,
 }
 
 /// A saved moment of an episode; see [`Env::snapshot`] and [`Env::restore`].
@@ -121,23 +125,7 @@ impl Env {
         Snapshot {
             fingerprint: self.fingerprint,
             scenario: self.scenario.name.clone(),
-            state: Box::new(EnvState {
-                seed: self.seed,
-                episode: self.episode,
-                fresh: self.fresh,
-                game: self.game.clone(),
-                controllers: self.controllers.clone(),
-                controlled: self.controlled.clone(),
-                observations: self.observations.clone(),
-                rewards: self.rewards.clone(),
-                checkpoints: self.checkpoints.clone(),
-                end: self.end,
-                info: self.info,
-                steps: self.steps,
-                done: self.done,
-                score_diff: self.score_diff,
-                waiting_for_game: self.waiting_for_game,
-            }),
+            state: Box::new(self.state.clone()),
         }
     }
 
@@ -154,22 +142,7 @@ impl Env {
                 env: self.scenario.name.clone(),
             });
         }
-        let s = &*snapshot.state;
-        self.seed = s.seed;
-        self.episode = s.episode;
-        self.fresh = s.fresh;
-        self.game.clone_from(&s.game);
-        self.controllers.clone_from(&s.controllers);
-        self.controlled.clone_from(&s.controlled);
-        self.observations.clone_from(&s.observations);
-        self.rewards.clone_from(&s.rewards);
-        self.checkpoints.clone_from(&s.checkpoints);
-        self.end = s.end;
-        self.info = s.info;
-        self.steps = s.steps;
-        self.done = s.done;
-        self.score_diff = s.score_diff;
-        self.waiting_for_game = s.waiting_for_game;
+        self.state.clone_from(&snapshot.state);
         Ok(())
     }
 }

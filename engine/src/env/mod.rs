@@ -254,6 +254,11 @@ impl Env {
             }
         }
         self.state.steps += 1;
+        // GRF counts engine steps from the second env step (the first one also plays the
+        // kickoff whistle), so half-time follows env step `second_half + 1` (grf.md §7.2-7.3).
+        if self.state.steps == self.scenario.second_half.saturating_add(1) {
+            self.state.game.start_second_half();
+        }
         self.state.waiting_for_game =
             if self.state.game.mode() == GameMode::Normal { 0 } else { self.state.waiting_for_game + 1 };
         for side in Side::BOTH {

@@ -52,6 +52,10 @@ pub struct Match {
     pub(crate) formations: [Vec<PlayerEntry>; 2],
     pub(crate) difficulty: [f32; 2],
     pub(crate) ball: Ball,
+    /// The scenario's ball start (m): the second half kicks off from it (grf.md §7.3).
+    pub(crate) ball_start: glam::Vec2,
+    /// The team with a player nearest the ball at the start; the other kicks off the second half.
+    pub(crate) first_kickoff: Side,
     /// Fixed geometry, shared by every match: not part of a snapshot.
     #[serde(skip, default = "PitchColliders::shared")]
     pub(crate) colliders: Arc<PitchColliders>,
@@ -105,6 +109,14 @@ impl Match {
         let (seed, noisy) = if scenario.deterministic { (42, false) } else { (seed, true) };
         let n = players.len();
         let ball_start = ball_start_to_world(scenario.ball_position[0], scenario.ball_position[1]);
+        let nearest = |side: Side| {
+            players
+                .iter()
+                .filter(|p| p.side == side)
+                .map(|p| p.position.distance(ball_start))
+                .fold(f32::INFINITY, f32::min)
+        };
+        let first_kickoff = if nearest(Side::Left) <= nearest(Side::Right) { Side::Left } else { Side::Right };
         Match {
             ai: [
                 TeamAi::new(Side::Left, difficulty[0], left.len()),
@@ -115,6 +127,8 @@ impl Match {
             formations: [left.to_vec(), right.to_vec()],
             difficulty,
             ball: Ball::at_rest(ball_start),
+            ball_start,
+            first_kickoff,
             colliders: PitchColliders::shared(),
             owner: None,
             owner_ticks: 0,
@@ -217,6 +231,19 @@ impl Match {
             }
             None => self.agent_driven[g] = false,
         }
+    }
+
+    /// Half-time (grf.md §7.3): fatigue is restored and the team that did not start with the ball
+    /// kicks off from the scenario's ball position, the two teams exchanging formations when they
+    /// have as many players. Teams do not change ends, as in GRF.
+    pub fn start_second_half(&mut self) {
+        crate::rules::kickoff::set_up(self, self.first_kickoff.opponent());
+        self.ball = Ball::at_rest(self.ball_start);
+        for p in &mut self.players {
+            p.fatigue = 0.0;
+        }
+        self.last_touch = None;
+        self.phase = Phase::Play;
     }
 
     /// Puts the ball loose at `position` (m) with `velocity` (m/s), as last touched by `last_touch`

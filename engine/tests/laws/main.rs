@@ -6,6 +6,7 @@ mod common;
 
 mod corner_kick;
 mod goal_kick;
+mod half_time;
 mod kickoff;
 mod throw_in;
 

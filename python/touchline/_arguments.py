@@ -15,6 +15,8 @@ from typing import Any
 import numpy as np
 from gymnasium import spaces
 
+from ._touchline import Env as _CoreEnv
+
 #: Representations whose observations are arrays (Gymnasium and PettingZoo envs accept these).
 ARRAY_REPRESENTATIONS = ("simple115v2", "simple115", "extracted")
 #: Every representation the extension can encode; "raw" is a list of dicts (grf.md §3.1).
@@ -152,6 +154,33 @@ def render_mode_argument(render_mode: str | None) -> None:
             f"render_mode={render_mode!r} is not available: touchline does not render yet, "
             "so the only render mode is None"
         )
+
+
+def core_env(
+    scenario: str | os.PathLike[str],
+    *,
+    left_agents: int,
+    right_agents: int,
+    representation: str,
+    rewards: str,
+    action_set: str,
+    seed: int | None,
+    stacked: bool,
+    channel_dimensions: Any,
+) -> _CoreEnv:
+    """The extension's `Env` from user arguments, each checked (and `representation` already
+    checked by the caller, who decides whether "raw" is allowed)."""
+    return _CoreEnv(
+        scenario_argument(scenario),
+        representation=representation,
+        left_agents=left_agents,
+        right_agents=right_agents,
+        rewards=rewards_argument(rewards),
+        action_set=action_set_argument(action_set),
+        seed=seed_argument(seed),
+        stacked=bool(stacked),
+        channel_dimensions=channel_dimensions_argument(channel_dimensions),
+    )
 
 
 def observation_box(shape: tuple[int, ...], dtype: str) -> spaces.Box:

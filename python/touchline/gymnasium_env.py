@@ -140,16 +140,16 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
             number_of_left_players_agent_controls, number_of_right_players_agent_controls
         )
         self.render_mode = render_mode
-        self._core = _CoreEnv(
-            _arguments.scenario_argument(scenario),
-            representation=_arguments.representation_argument(representation, allow_raw=False),
+        self._core = _arguments.core_env(
+            scenario,
             left_agents=left,
             right_agents=right,
-            rewards=_arguments.rewards_argument(rewards),
-            action_set=_arguments.action_set_argument(action_set),
-            seed=_arguments.seed_argument(seed),
-            stacked=bool(stacked),
-            channel_dimensions=_arguments.channel_dimensions_argument(channel_dimensions),
+            representation=_arguments.representation_argument(representation, allow_raw=False),
+            rewards=rewards,
+            action_set=action_set,
+            seed=seed,
+            stacked=stacked,
+            channel_dimensions=channel_dimensions,
         )
         self.representation = representation
         # A scenario with control_all_players may give the agent more players than asked for.

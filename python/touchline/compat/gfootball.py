@@ -234,15 +234,15 @@ def create_environment(
     left, right = _arguments.controls_argument(
         number_of_left_players_agent_controls, number_of_right_players_agent_controls
     )
-    core = _CoreEnv(
-        _arguments.scenario_argument(level),
-        representation=representation,
+    core = _arguments.core_env(
+        level,
         left_agents=left,
         right_agents=right,
-        rewards=_arguments.rewards_argument(rewards),
-        action_set=_arguments.action_set_argument(action_set),
-        seed=_arguments.seed_argument(seed),
-        stacked=bool(stacked),
-        channel_dimensions=_arguments.channel_dimensions_argument(channel_dimensions),
+        representation=representation,
+        rewards=rewards,
+        action_set=action_set,
+        seed=seed,
+        stacked=stacked,
+        channel_dimensions=channel_dimensions,
     )
     return FootballEnv(core, representation)

@@ -42,7 +42,7 @@ pub mod player;
 pub mod reward;
 mod rng;
 pub mod rules;
-mod scenario;
+pub mod scenario;
 
 pub use env::{Env, EnvConfig, Snapshot, StepInfo, StepOutcome};
 pub use error::EngineError;
@@ -50,7 +50,7 @@ pub use game::{Action, ActionSet, GameMode, Match};
 pub use geometry::Side;
 pub use obs::RawObservation;
 pub use player::Role;
-pub use scenario::{MAX_PLAYERS_PER_TEAM, PlayerEntry, Scenario};
+pub use scenario::{MAX_PLAYERS_PER_TEAM, PlayerEntry, SCENARIO_FORMAT_VERSION, Scenario};
 
 /// The names most programs need.
 pub mod prelude {

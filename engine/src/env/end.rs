@@ -4,7 +4,7 @@
 
 use crate::game::GameMode;
 use crate::geometry::Side;
-use crate::scenario::Scenario;
+use crate::scenario::{EndCondition, Scenario};
 
 /// What the end conditions remember between steps.
 #[derive(Clone, Copy, Debug, Default, serde::Serialize, serde::Deserialize)]
@@ -16,13 +16,23 @@ pub(crate) struct EndTracker {
 impl EndTracker {
     /// Whether the scenario's conditions end the episode after a step that left `score`, `mode`
     /// and ball owner team `owner` (None when nobody has the ball at his feet).
+    /// `steps` is the number of steps taken this episode and `ball` the ball's position in
+    /// normalised global units, for the scenario's extra conditions ([`EndCondition`]).
     pub(crate) fn terminated(
         &mut self,
         scenario: &Scenario,
         score: [u32; 2],
         mode: GameMode,
         owner: Option<Side>,
+        steps: u32,
+        ball: [f32; 2],
     ) -> bool {
+        let extra = scenario.end_when.iter().any(|c| match c {
+            EndCondition::Steps(n) => steps >= *n,
+            EndCondition::BallIn(region) => region.contains(ball[0], ball[1]),
+            // Scripts run in the env's hooks, which read the same step (see `Env::step`).
+            EndCondition::Script { .. } => false,
+        });
         let scored = scenario.end_episode_on_score && (score[0] > 0 || score[1] > 0);
         let out = scenario.end_episode_on_out_of_play
             && self.previous_mode == Some(GameMode::Normal)
@@ -33,7 +43,7 @@ impl EndTracker {
         if owner.is_some() {
             self.previous_owner = owner;
         }
-        scored || out || lost
+        scored || out || lost || extra
     }
 
     /// Starts tracking a new episode from its first observation.
@@ -52,9 +62,9 @@ mod tests {
         let s = Scenario { end_episode_on_out_of_play: true, ..Scenario::default() };
         let mut t = EndTracker::default();
         // First observation non-normal does not end.
-        assert!(!t.terminated(&s, [0, 0], GameMode::ThrowIn, None));
-        assert!(!t.terminated(&s, [0, 0], GameMode::Normal, None));
-        assert!(t.terminated(&s, [0, 0], GameMode::Corner, None));
+        assert!(!t.terminated(&s, [0, 0], GameMode::ThrowIn, None, 1, [0.0; 2]));
+        assert!(!t.terminated(&s, [0, 0], GameMode::Normal, None, 1, [0.0; 2]));
+        assert!(t.terminated(&s, [0, 0], GameMode::Corner, None, 1, [0.0; 2]));
     }
 
     #[test]
@@ -62,17 +72,33 @@ mod tests {
         let s = Scenario { end_episode_on_possession_change: true, ..Scenario::default() };
         let mut t = EndTracker::default();
         t.reset(Some(Side::Left));
-        assert!(!t.terminated(&s, [0, 0], GameMode::Normal, None));
-        assert!(!t.terminated(&s, [0, 0], GameMode::Normal, Some(Side::Left)));
-        assert!(!t.terminated(&s, [0, 0], GameMode::Normal, None));
-        assert!(t.terminated(&s, [0, 0], GameMode::Normal, Some(Side::Right)));
+        assert!(!t.terminated(&s, [0, 0], GameMode::Normal, None, 1, [0.0; 2]));
+        assert!(!t.terminated(&s, [0, 0], GameMode::Normal, Some(Side::Left), 1, [0.0; 2]));
+        assert!(!t.terminated(&s, [0, 0], GameMode::Normal, None, 1, [0.0; 2]));
+        assert!(t.terminated(&s, [0, 0], GameMode::Normal, Some(Side::Right), 1, [0.0; 2]));
+    }
+
+    #[test]
+    fn extra_conditions_end_the_episode() {
+        use crate::scenario::Region;
+        let s = Scenario {
+            end_when: vec![
+                EndCondition::Steps(50),
+                EndCondition::BallIn(Region::Rect { x: [-1.0, 0.0], y: [-0.42, 0.42] }),
+            ],
+            ..Scenario::default()
+        };
+        let mut t = EndTracker::default();
+        assert!(!t.terminated(&s, [0, 0], GameMode::Normal, None, 49, [0.3, 0.0]));
+        assert!(t.terminated(&s, [0, 0], GameMode::Normal, None, 50, [0.3, 0.0]));
+        assert!(t.terminated(&s, [0, 0], GameMode::Normal, None, 2, [-0.3, 0.1]));
     }
 
     #[test]
     fn score_ends_only_when_asked() {
         let mut t = EndTracker::default();
-        assert!(!t.terminated(&Scenario::default(), [1, 0], GameMode::Normal, None));
+        assert!(!t.terminated(&Scenario::default(), [1, 0], GameMode::Normal, None, 1, [0.0; 2]));
         let s = Scenario { end_episode_on_score: true, ..Scenario::default() };
-        assert!(t.terminated(&s, [0, 1], GameMode::Normal, None));
+        assert!(t.terminated(&s, [0, 1], GameMode::Normal, None, 1, [0.0; 2]));
     }
 }

@@ -20,7 +20,7 @@ use crate::game::{Action, ActionSet, GameMode, Kick, KickTarget, Match, PlayerIn
 use crate::geometry::Side;
 use crate::obs::RawObservation;
 use crate::player::{DRIBBLE_SPEED, WALK_SPEED};
-use crate::reward::{CheckpointTracker, scoring_reward};
+use crate::reward::{CheckpointTracker, RewardPlan, scoring_reward};
 use crate::scenario::Scenario;
 use end::EndTracker;
 
@@ -74,6 +74,8 @@ pub struct Env {
     config: EnvConfig,
     /// Every player controllable on a side has an agent: control never switches.
     fixed_control: [bool; 2],
+    /// The reward terms paid each step.
+    reward_plan: RewardPlan,
     /// Identifies scenario and configuration, so that snapshots restore only where they belong.
     fingerprint: u64,
     /// Everything that changes while the env plays (what a [`Snapshot`] saves).
@@ -120,7 +122,19 @@ impl Env {
             .collect();
         let n = controllers.len();
         let game = Match::new(&scenario, 0, seed);
+        let reward_plan = RewardPlan::new(&scenario, &config)?;
+        if let Some(crate::scenario::EndCondition::Script { path }) =
+            scenario.end_when.iter().find(|c| matches!(c, crate::scenario::EndCondition::Script { .. }))
+        {
+            return Err(EngineError::InvalidScenario {
+                reason: format!(
+                    "the end-condition script \"{path}\" needs script hooks; build the env through \
+                     touchline_dsl, which runs scripts"
+                ),
+            });
+        }
         let mut env = Env {
+            reward_plan,
             fixed_control: [agents[0] == controllable[0], agents[1] == controllable[1]],
             scenario,
             config,
@@ -277,21 +291,26 @@ impl Env {
         let scoring = scoring_reward(self.state.score_diff, diff);
         self.state.score_diff = diff;
         let mut checkpoint_total = 0.0;
+        let plan = self.reward_plan;
         for i in 0..self.state.controllers.len() {
             let r = if self.state.controllers[i].side == Side::Left { scoring } else { -scoring };
-            let bonus = if self.config.checkpoints {
-                self.state.checkpoints[i].reward(r, &self.state.observations[i])
-            } else {
-                0.0
+            let bonus = match plan.checkpoints {
+                Some(c) => {
+                    c.weight * self.state.checkpoints[i].reward_with(c.count, c.value, r, &self.state.observations[i])
+                }
+                None => 0.0,
             };
             checkpoint_total += bonus;
-            self.state.rewards[i] = r + bonus;
+            self.state.rewards[i] = plan.scoring * r + bonus;
         }
+        let ball = self.state.game.ball().position;
         let terminated = self.state.end.terminated(
             &self.scenario,
             score,
             self.state.game.mode(),
             self.state.game.owner().map(|o| o.0),
+            self.state.steps,
+            crate::geometry::coords::world_to_obs(glam::Vec2::new(ball.x, ball.y)),
         );
         let truncated = self.state.steps > self.scenario.game_duration;
         self.state.done = terminated || truncated;

@@ -22,7 +22,7 @@ use crate::physics::{Ball, PitchColliders};
 use crate::player::Player;
 use crate::rng::MatchRng;
 use crate::rules::{Restart, Stoppage};
-use crate::scenario::{PlayerEntry, Scenario};
+use crate::scenario::{Placement, Scenario};
 
 /// Whether the ball is in play or the match is waiting for a restart.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -49,7 +49,7 @@ pub(crate) const OUT_DEAD_TICKS: u16 = 100;
 pub struct Match {
     pub(crate) players: Vec<Player>,
     pub(crate) ranges: [Range<usize>; 2],
-    pub(crate) formations: [Vec<PlayerEntry>; 2],
+    pub(crate) formations: [Vec<[f32; 2]>; 2],
     pub(crate) difficulty: [f32; 2],
     pub(crate) ball: Ball,
     /// The scenario's ball start (m): the second half kicks off from it (grf.md §7.3).
@@ -89,10 +89,15 @@ impl Match {
     /// formation places, ball at its start, play on (GRF's initial kickoff counts as taken on the
     /// first tick, grf.md §3.4). `seed` picks the random stream; deterministic scenarios use 42.
     pub fn new(scenario: &Scenario, episode: u64, seed: u64) -> Match {
-        let (left, right) = scenario.teams_for_episode(episode);
+        Match::from_placement(scenario, scenario.draw(seed, episode), episode, seed)
+    }
+
+    /// Sets up a match as [`Match::new`] from an already drawn `placement` of `scenario`.
+    pub fn from_placement(scenario: &Scenario, placement: Placement, episode: u64, seed: u64) -> Match {
+        let Placement { left, right, ball, .. } = placement;
         let difficulty = [scenario.left_team_difficulty, scenario.right_team_difficulty];
         let mut players = Vec::with_capacity(left.len() + right.len());
-        for (side, entries) in [(Side::Left, left), (Side::Right, right)] {
+        for (side, entries) in [(Side::Left, &left), (Side::Right, &right)] {
             for (i, e) in entries.iter().enumerate() {
                 let position = formation_to_world(side, e.x, e.y);
                 let home = TeamFrame::of(side).vec2(position);
@@ -108,7 +113,7 @@ impl Match {
         let ranges = [0..left.len(), left.len()..left.len() + right.len()];
         let (seed, noisy) = if scenario.deterministic { (42, false) } else { (seed, true) };
         let n = players.len();
-        let ball_start = ball_start_to_world(scenario.ball_position[0], scenario.ball_position[1]);
+        let ball_start = ball_start_to_world(ball[0], ball[1]);
         let nearest = |side: Side| {
             players
                 .iter()
@@ -124,7 +129,7 @@ impl Match {
             ],
             players,
             ranges,
-            formations: [left.to_vec(), right.to_vec()],
+            formations: [left.iter().map(|e| [e.x, e.y]).collect(), right.iter().map(|e| [e.x, e.y]).collect()],
             difficulty,
             ball: Ball::at_rest(ball_start),
             ball_start,

@@ -30,19 +30,26 @@ impl CheckpointTracker {
     /// The checkpoint reward for a step in which this controller's scoring reward was `scoring`
     /// and whose resulting observation (in the controller's frame) is `obs`.
     pub fn reward(&mut self, scoring: f32, obs: &RawObservation) -> f32 {
+        self.reward_with(CHECKPOINT_COUNT, CHECKPOINT_REWARD, scoring, obs)
+    }
+
+    /// As [`CheckpointTracker::reward`] with `count` zones (1–100) worth `value` each: zone `k`
+    /// is collected within distance 0.99 − 0.8·k/(count − 1) of the opponent goal.
+    pub fn reward_with(&mut self, count: u8, value: f32, scoring: f32, obs: &RawObservation) -> f32 {
         if scoring == 1.0 {
-            let rest = CHECKPOINT_COUNT - self.collected;
-            self.collected = CHECKPOINT_COUNT;
-            return CHECKPOINT_REWARD * f32::from(rest);
+            let rest = count.saturating_sub(self.collected);
+            self.collected = count;
+            return value * f32::from(rest);
         }
         if obs.ball_owned_team != 0 || obs.ball_owned_player != obs.active || obs.active < 0 {
             return 0.0;
         }
         let (dx, dy) = (obs.ball[0] - 1.0, obs.ball[1]);
         let d = (dx * dx + dy * dy).sqrt();
+        let step = if count > 1 { 0.8 / f32::from(count - 1) } else { 0.0 };
         let mut reward = 0.0;
-        while self.collected < CHECKPOINT_COUNT && d <= checkpoint_threshold(self.collected) {
-            reward += CHECKPOINT_REWARD;
+        while self.collected < count && d <= 0.99 - step * f32::from(self.collected) {
+            reward += value;
             self.collected += 1;
         }
         reward

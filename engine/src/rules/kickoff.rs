@@ -28,7 +28,10 @@ pub fn after_goal(scorer: Side) -> Restart {
 
 /// Closest distance (m) of a formation's players to the centre spot.
 fn nearest_to_centre(m: &Match, side: Side) -> f32 {
-    m.formations[side.index()].iter().map(|e| formation_to_world(side, e.x, e.y).length()).fold(f32::INFINITY, f32::min)
+    m.formations[side.index()]
+        .iter()
+        .map(|&[x, y]| formation_to_world(side, x, y).length())
+        .fold(f32::INFINITY, f32::min)
 }
 
 /// Places both teams for a kickoff by `kicking`.
@@ -39,25 +42,24 @@ pub(crate) fn set_up(m: &mut Match, kicking: Side) {
         // Exchange places (not roles or flags): slot i of each team takes the other's place i.
         let (left, right) = m.formations.split_at_mut(1);
         for (a, b) in left[0].iter_mut().zip(right[0].iter_mut()) {
-            std::mem::swap(&mut a.x, &mut b.x);
-            std::mem::swap(&mut a.y, &mut b.y);
+            std::mem::swap(a, b);
         }
     }
     for g in 0..m.players.len() {
         let side = m.players[g].side;
-        let e = m.formations[side.index()][m.players[g].index];
-        let mut at = formation_to_world(side, e.x.min(0.0), e.y);
+        let [ex, ey] = m.formations[side.index()][m.players[g].index];
+        let mut at = formation_to_world(side, ex.min(0.0), ey);
         if side == other && at.length() < CENTRE_CIRCLE_RADIUS {
             at = at.normalize_or(Vec2::new(-side.attack_sign(), 0.0)) * CENTRE_CIRCLE_RADIUS;
             if at.x * side.attack_sign() > 0.0 {
                 at.x = 0.0;
-                at.y = CENTRE_CIRCLE_RADIUS.copysign(e.y);
+                at.y = CENTRE_CIRCLE_RADIUS.copysign(ey);
             }
         }
         let p = &mut m.players[g];
         p.halt();
         p.position = at;
-        p.home = TeamFrame::of(side).vec2(formation_to_world(side, e.x, e.y));
+        p.home = TeamFrame::of(side).vec2(formation_to_world(side, ex, ey));
         p.facing = Vec2::new(side.attack_sign(), 0.0);
     }
     m.ball = crate::physics::Ball::at_rest(Vec2::ZERO);

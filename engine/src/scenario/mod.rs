@@ -7,10 +7,22 @@
 //! The scenario language compiles `.tl` text into this value; a compiled scenario is this value
 //! serialised to JSON.
 
+mod placement;
+mod random;
+mod terms;
+
 use serde::{Deserialize, Serialize};
+
+pub use placement::{Body, MAX_PLACEMENT_TRIES, Placement, Require};
+pub use random::{Distribution, PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Region, Sample, Spot};
+pub use terms::{EndCondition, RewardKind, RewardTerm};
 
 use crate::error::EngineError;
 use crate::player::Role;
+
+/// Version of the compiled-scenario format this engine writes and reads. A scenario with a newer
+/// version is refused (its fields may mean something this engine does not know).
+pub const SCENARIO_FORMAT_VERSION: u32 = 1;
 
 /// Most players a team may field (Law 3).
 pub const MAX_PLAYERS_PER_TEAM: usize = 11;
@@ -19,6 +31,8 @@ pub const MAX_PLAYERS_PER_TEAM: usize = 11;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Scenario {
+    /// Compiled-format version ([`SCENARIO_FORMAT_VERSION`]; default 1).
+    pub format_version: u32,
     /// Scenario name, e.g. `academy_empty_goal_close`.
     pub name: String,
     /// Human-readable description (the `.tl` file's doc comment).
@@ -45,8 +59,16 @@ pub struct Scenario {
     pub second_half: u32,
     /// Agents control every controllable player of a side they play (default false).
     pub control_all_players: bool,
-    /// Ball start `[x, y]` in the global frame, normalised units (default `[0, 0]`).
+    /// Ball start `[x, y]` in the global frame, normalised units (default `[0, 0]`); the nominal
+    /// start when `ball_random` is set.
     pub ball_position: [f32; 2],
+    /// When set, the ball's start is drawn from this at every reset (global frame).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ball_random: Option<Spot>,
+    /// When set, the ball starts here in odd episodes (the 2nd, 4th, … reset), as GRF's test
+    /// scenarios that branch on the episode number (grf.md §2.3).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub odd_episode_ball_position: Option<[f32; 2]>,
     /// Left team's players, in observation order, in the left team's own frame.
     pub left_team: Vec<PlayerEntry>,
     /// Right team's players, in observation order, in the right team's own frame.
@@ -54,10 +76,20 @@ pub struct Scenario {
     /// GRF's per-episode formation swap: when true, the two player lists change sides on every
     /// odd episode (the 2nd, 4th, … reset), so the kickoff formation alternates (grf.md §2.2).
     pub swap_teams_on_odd_episodes: bool,
+    /// Constraints every drawn placement meets (bounded rejection sampling, see [`Scenario::draw`]).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub requires: Vec<Require>,
+    /// Reward terms; empty means "as the env is configured" (GRF's scoring, plus checkpoints
+    /// when the env asks for them).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub rewards: Vec<RewardTerm>,
+    /// Episode-end conditions beyond the three `end_episode_on_*` flags.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub end_when: Vec<EndCondition>,
 }
 
 /// One player of a team: role, position in the team's own frame, and flags.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PlayerEntry {
     /// The player's role; exactly one GK per team.
@@ -66,6 +98,10 @@ pub struct PlayerEntry {
     pub x: f32,
     /// y in the team's own frame, normalised units.
     pub y: f32,
+    /// When set, the position is drawn from this at every reset (team's own frame) and `x`, `y`
+    /// are only its nominal value (the distribution's centre).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub random: Option<Spot>,
     /// A lazy player only stands and reacts physically (grf.md §2.2).
     #[serde(default)]
     pub lazy: bool,
@@ -81,13 +117,14 @@ fn yes() -> bool {
 impl PlayerEntry {
     /// A non-lazy, controllable player.
     pub fn new(role: Role, x: f32, y: f32) -> PlayerEntry {
-        PlayerEntry { role, x, y, lazy: false, controllable: true }
+        PlayerEntry { role, x, y, random: None, lazy: false, controllable: true }
     }
 }
 
 impl Default for Scenario {
     fn default() -> Scenario {
         Scenario {
+            format_version: SCENARIO_FORMAT_VERSION,
             name: String::new(),
             description: String::new(),
             game_duration: 3000,
@@ -104,6 +141,11 @@ impl Default for Scenario {
             left_team: Vec::new(),
             right_team: Vec::new(),
             swap_teams_on_odd_episodes: false,
+            ball_random: None,
+            odd_episode_ball_position: None,
+            requires: Vec::new(),
+            rewards: Vec::new(),
+            end_when: Vec::new(),
         }
     }
 }
@@ -112,6 +154,21 @@ impl Default for Scenario {
 const MAX_ABS_X: f32 = 1.1;
 /// Largest |y| accepted: the outer rim (40 m) in normalised units.
 const MAX_ABS_Y: f32 = 0.48;
+
+/// Whether `(x, y)` is finite and inside the rim.
+fn on_pitch(x: f32, y: f32) -> bool {
+    x.is_finite() && y.is_finite() && x.abs() <= MAX_ABS_X && y.abs() <= MAX_ABS_Y
+}
+
+/// A spot's parameters are sound and every draw lands inside the rim.
+fn check_spot(spot: &Spot, what: &str) -> Result<(), String> {
+    spot.check().map_err(|e| format!("{what}: {e}"))?;
+    let [[x0, x1], [y0, y1]] = spot.bounds();
+    if !(on_pitch(x0, y0) && on_pitch(x1, y1)) {
+        return Err(format!("{what}: draws reach ({x0}..{x1}, {y0}..{y1}), off the pitch"));
+    }
+    Ok(())
+}
 
 impl Scenario {
     /// Checks what the engine relies on: 1–11 players a side with exactly one goalkeeper,
@@ -129,9 +186,19 @@ impl Scenario {
                 return bad(format!("{side}_team_difficulty {d} is outside [0, 1]"));
             }
         }
-        let [bx, by] = self.ball_position;
-        if !(bx.is_finite() && by.is_finite() && bx.abs() <= MAX_ABS_X && by.abs() <= MAX_ABS_Y) {
-            return bad(format!("ball position ({bx}, {by}) is off the pitch"));
+        if self.format_version > SCENARIO_FORMAT_VERSION {
+            return bad(format!(
+                "format_version {} is newer than this touchline reads ({SCENARIO_FORMAT_VERSION})",
+                self.format_version
+            ));
+        }
+        for [bx, by] in std::iter::once(self.ball_position).chain(self.odd_episode_ball_position) {
+            if !on_pitch(bx, by) {
+                return bad(format!("ball position ({bx}, {by}) is off the pitch"));
+            }
+        }
+        if let Some(spot) = &self.ball_random {
+            check_spot(spot, "the ball's random start").map_err(|reason| EngineError::InvalidScenario { reason })?;
         }
         for (side, team) in [("left", &self.left_team), ("right", &self.right_team)] {
             if team.is_empty() || team.len() > MAX_PLAYERS_PER_TEAM {
@@ -142,9 +209,43 @@ impl Scenario {
                 return bad(format!("{side} team has {keepers} goalkeepers; exactly one is required"));
             }
             for (i, p) in team.iter().enumerate() {
-                if !(p.x.is_finite() && p.y.is_finite() && p.x.abs() <= MAX_ABS_X && p.y.abs() <= MAX_ABS_Y) {
+                if !on_pitch(p.x, p.y) {
                     return bad(format!("{side} player {i} ({}) at ({}, {}) is off the pitch", p.role, p.x, p.y));
                 }
+                if let Some(spot) = &p.random {
+                    check_spot(spot, &format!("{side} player {i} ({})", p.role))
+                        .map_err(|reason| EngineError::InvalidScenario { reason })?;
+                }
+            }
+        }
+        for r in &self.requires {
+            let (Require::MinDistance { a, b, metres } | Require::MaxDistance { a, b, metres }) = r;
+            for body in [a, b] {
+                let (i, team, side) = match *body {
+                    Body::Ball => continue,
+                    Body::Left(i) => (i, &self.left_team, "left"),
+                    Body::Right(i) => (i, &self.right_team, "right"),
+                };
+                // With the odd-episode swap either list stands on either side.
+                let n = if self.swap_teams_on_odd_episodes {
+                    self.left_team.len().min(self.right_team.len())
+                } else {
+                    team.len()
+                };
+                if i >= n {
+                    return bad(format!("require names {side} player {i}, which does not exist"));
+                }
+            }
+            if !(metres.is_finite() && *metres >= 0.0) {
+                return bad(format!("require distance {metres} m must be finite and >= 0"));
+            }
+        }
+        for t in &self.rewards {
+            t.check().map_err(|reason| EngineError::InvalidScenario { reason })?;
+        }
+        for c in &self.end_when {
+            if let EndCondition::BallIn(region) = c {
+                region.check().map_err(|reason| EngineError::InvalidScenario { reason })?;
             }
         }
         Ok(())

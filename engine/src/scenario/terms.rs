@@ -1,0 +1,80 @@
+//! A scenario's reward terms and extra episode-end conditions, as the language declares them
+//! (`reward scoring + checkpoint(count: 10, value: 0.1)`, `end when steps >= 200 or ball in …`).
+
+use serde::{Deserialize, Serialize};
+
+use super::random::Region;
+
+/// One weighted reward term; a controller's reward is the sum of `weight × term` over the terms.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RewardTerm {
+    /// What is rewarded.
+    pub reward: RewardKind,
+    /// Multiplier (default 1).
+    #[serde(default = "one")]
+    pub weight: f32,
+}
+
+fn one() -> f32 {
+    1.0
+}
+
+/// A reward a scenario can name.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum RewardKind {
+    /// GRF's SCORING: +1 for a goal scored, −1 for one conceded (grf.md §6.1).
+    Scoring,
+    /// GRF's CHECKPOINTS: `count` zones in the opponent half, `value` each, the first time the
+    /// controlled player carries the ball into one; a goal pays the rest (grf.md §6.2; GRF uses
+    /// count 10, value 0.1).
+    Checkpoints {
+        /// Number of zones (1–100).
+        count: u8,
+        /// Reward per zone.
+        value: f32,
+    },
+    /// A rhai script's reward (run through the env's hooks; `path` as written in the source,
+    /// relative to the scenario file).
+    Script {
+        /// Script path.
+        path: String,
+    },
+}
+
+/// An episode-end condition beyond GRF's three flags (score, out of play, possession change).
+/// Each terminates the episode (`terminated`, not `truncated`) after the step where it holds.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum EndCondition {
+    /// At least this many steps have been taken in the episode.
+    Steps(u32),
+    /// The ball is in the region (global frame, normalised units; the left team attacks +x).
+    BallIn(Region),
+    /// A rhai script says the episode ends (run through the env's hooks).
+    Script {
+        /// Script path, relative to the scenario file.
+        path: String,
+    },
+}
+
+impl RewardTerm {
+    /// GRF's default reward: scoring with weight 1.
+    pub fn scoring() -> RewardTerm {
+        RewardTerm { reward: RewardKind::Scoring, weight: 1.0 }
+    }
+
+    /// Checks parameters: a finite weight, 1–100 checkpoints with a finite value.
+    pub(crate) fn check(&self) -> Result<(), String> {
+        if !self.weight.is_finite() {
+            return Err(format!("reward weight {} is not finite", self.weight));
+        }
+        match &self.reward {
+            RewardKind::Checkpoints { count, value } if !(1..=100).contains(count) || !value.is_finite() => {
+                Err(format!("checkpoints need a count in 1..=100 and a finite value (got {count}, {value})"))
+            }
+            _ => Ok(()),
+        }
+    }
+}

@@ -43,6 +43,7 @@ pub mod reward;
 mod rng;
 pub mod rules;
 pub mod scenario;
+pub mod stats;
 
 pub use env::{Env, EnvConfig, Snapshot, StepInfo, StepOutcome};
 pub use error::EngineError;
@@ -51,6 +52,7 @@ pub use geometry::Side;
 pub use obs::RawObservation;
 pub use player::Role;
 pub use scenario::{MAX_PLAYERS_PER_TEAM, PlayerEntry, SCENARIO_FORMAT_VERSION, Scenario};
+pub use stats::{Event, MatchStats, TeamStats};
 
 /// The names most programs need.
 pub mod prelude {

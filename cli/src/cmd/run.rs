@@ -13,6 +13,8 @@ use rand_pcg::Pcg64Mcg;
 use serde::Serialize;
 use touchline_engine::{Action, ActionSet, Env, EnvConfig, Scenario};
 
+use super::stats::StatsLine;
+
 use crate::CliError;
 
 /// Arguments of `touchline run`.
@@ -49,6 +51,12 @@ pub(crate) struct RunArgs {
     /// Add GRF's Checkpoint reward to the Scoring reward.
     #[arg(long)]
     checkpoints: bool,
+
+    /// Print match statistics (goals, shots, passes, possession, fouls, cards, offsides, corners,
+    /// ...) for every episode and on average; with `--json`, add them to each episode and the
+    /// summary.
+    #[arg(long)]
+    stats: bool,
 }
 
 /// How actions are chosen for every controlled player.
@@ -149,6 +157,9 @@ struct EpisodeRecord {
     terminated: bool,
     /// The time limit was reached at the last step.
     truncated: bool,
+    /// Match statistics, with `--stats`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    stats: Option<StatsLine>,
 }
 
 impl EpisodeRecord {
@@ -174,6 +185,9 @@ struct Summary {
     wall_seconds: f64,
     /// `total_steps / wall_seconds`; `null` when too little time passed to measure.
     steps_per_second: Option<f64>,
+    /// Mean match statistics per episode, with `--stats`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mean_stats: Option<StatsLine>,
 }
 
 impl Summary {
@@ -191,6 +205,7 @@ impl Summary {
             mean_reward: records.iter().map(|r| r.reward).sum::<f64>() / n,
             wall_seconds,
             steps_per_second: (wall_seconds > 0.0).then(|| total_steps as f64 / wall_seconds),
+            mean_stats: StatsLine::mean(records.iter().filter_map(|r| r.stats.as_ref())),
         }
     }
 }
@@ -252,6 +267,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
             reward,
             terminated: outcome.terminated,
             truncated: outcome.truncated,
+            stats: args.stats.then(|| StatsLine::from(env.game().stats())),
         };
         // The bar's length assumed every episode runs to the time limit: drop what was not played.
         bar.set_length(bar.length().unwrap_or(0).saturating_sub(expected_steps.saturating_sub(u64::from(info.steps))));
@@ -265,7 +281,11 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
                     record.steps,
                     record.reward,
                     record.ended()
-                )
+                )?;
+                if let Some(stats) = &record.stats {
+                    stats.write(&mut out, "")?;
+                }
+                Ok::<(), io::Error>(())
             })?;
         }
         records.push(record);
@@ -333,6 +353,10 @@ fn write_summary(out: &mut impl Write, s: &Summary) -> io::Result<()> {
     writeln!(out, "total goals  {}", s.total_goals)?;
     writeln!(out, "mean steps   {:.1}", s.mean_steps)?;
     writeln!(out, "mean reward  {:.3}", s.mean_reward)?;
+    if let Some(stats) = &s.mean_stats {
+        writeln!(out, "mean match statistics per episode (left / right):")?;
+        stats.write(out, "")?;
+    }
     match s.steps_per_second {
         Some(rate) => writeln!(out, "steps/s      {rate:.0} ({} steps in {:.3} s)", s.total_steps, s.wall_seconds),
         None => writeln!(out, "steps/s      - ({} steps, too fast to time)", s.total_steps),
@@ -379,6 +403,7 @@ mod tests {
             reward,
             terminated: true,
             truncated: false,
+            stats: None,
         };
         let s = Summary::new(&[record([1, 0], 10, 1.0), record([0, 2], 30, -1.0)], Duration::from_secs(2));
         assert_eq!(s.mean_score, [0.5, 1.0]);

@@ -1,5 +1,6 @@
 //! Set pieces: the taker waits a moment and then plays the ball (short throw-ins, crosses into the
-//! box from corners, goal kicks like a keeper's distribution); the others take up their places.
+//! box from corners, goal kicks like a keeper's distribution, shots from penalty kicks and from
+//! free kicks within range, passes from other free kicks); the others take up their places.
 
 use glam::Vec2;
 
@@ -43,8 +44,21 @@ pub(crate) fn plan(
 fn take(view: &MatchView, g: usize, analysis: &Analysis, rng: &mut MatchRng) -> Plan {
     let me = &view.players[g];
     let frame = analysis.frame;
+    let me_t = frame.vec2(me.position);
+    let shooting_range = me_t.distance(Vec2::new(HALF_LENGTH, 0.0)) < 27.0 && me_t.y.abs() < 16.0;
     match view.mode {
         GameMode::GoalKick => goalkeeper::distribute(view, g, u64::MAX, analysis),
+        GameMode::Penalty => {
+            // Side netting, left or right at random, a little height.
+            let y = if rng.unit() < 0.5 { -2.6 } else { 2.6 };
+            let aim = frame.vec2(Vec2::new(HALF_LENGTH, y + rng.noise(0.6)));
+            shot(me.position, aim, 0.8)
+        }
+        GameMode::FreeKick if shooting_range => {
+            let y = if me_t.y > 0.0 { -2.4 } else { 2.4 };
+            let aim = frame.vec2(Vec2::new(HALF_LENGTH, y + rng.noise(1.0)));
+            shot(me.position, aim, 1.6)
+        }
         GameMode::Corner => {
             let aim = frame.vec2(Vec2::new(HALF_LENGTH - 8.0 + rng.noise(2.0), rng.noise(5.0)));
             let receiver = view
@@ -70,6 +84,13 @@ fn take(view: &MatchView, g: usize, analysis: &Analysis, rng: &mut MatchRng) -> 
             let target = best.map_or(me.position + frame.vec2(Vec2::new(15.0, 0.0)), |b| b.0);
             kick(me.position, KickKind::ShortPass, target)
         }
+    }
+}
+
+fn shot(from: Vec2, aim: Vec2, height: f32) -> Plan {
+    Plan {
+        kick: Some(Kick { kind: KickKind::Shot, target: KickTarget::Point(aim), height, power: 0.7 }),
+        ..Plan::go(from, 0.0, aim - from)
     }
 }
 

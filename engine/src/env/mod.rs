@@ -251,6 +251,7 @@ impl Env {
             return Err(EngineError::EpisodeOver);
         }
         self.state.fresh = false;
+        self.state.game.clear_events();
         for (i, &action) in actions.iter().enumerate() {
             let action = self.anti_stalling(i, action);
             self.apply_action(i, action);

@@ -21,8 +21,11 @@ use crate::geometry::{Side, TeamFrame};
 use crate::physics::{Ball, PitchColliders};
 use crate::player::Player;
 use crate::rng::MatchRng;
+use crate::rules::fouls::PendingFoul;
+use crate::rules::offside::Watch;
 use crate::rules::{Restart, Stoppage};
 use crate::scenario::{Placement, Scenario};
+use crate::stats::{Event, EventLog, MatchStats};
 
 /// Whether the ball is in play or the match is waiting for a restart.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -80,8 +83,23 @@ pub struct Match {
     pub(crate) rng: MatchRng,
     pub(crate) in_play_ticks: u64,
     pub(crate) dead_ticks: u64,
-    /// The last stoppage seen (goal or ball out), kept for the env and the tests.
+    /// The last stoppage seen (goal, ball out, offside, foul), kept for the env and the tests.
     pub(crate) last_stoppage: Option<Stoppage>,
+    /// Whether the offside law applies (the scenario's `offsides`).
+    pub(crate) offsides: bool,
+    /// Players noted in an offside position at the last kick.
+    pub(crate) offside_watch: Watch,
+    /// A foul waiting for the advantage.
+    pub(crate) pending_foul: Option<PendingFoul>,
+    /// The passer (global index) of a pass not yet received.
+    pub(crate) pending_pass: Option<usize>,
+    /// A stoppage the referee called during this tick's ball handling (offside, a foul in the
+    /// area), acted on at the end of the tick.
+    pub(crate) whistle: Option<Stoppage>,
+    /// The match statistics so far.
+    pub(crate) stats: MatchStats,
+    /// Events since the env's last step began.
+    pub(crate) events: EventLog,
 }
 
 impl Match {
@@ -104,9 +122,10 @@ impl Match {
                 let mut p = Player::new(side, i, e.role, position, home);
                 p.lazy = e.lazy;
                 p.controllable = e.controllable;
+                p.attributes = crate::player::Attributes::for_slot(i);
                 // Difficulty scales every stat (grf.md §7.6): top speed 8·(0.9 + 0.1·stat).
-                let stat = 0.3 + 0.7 * difficulty[side.index()];
-                p.max_speed = crate::player::top_speed(stat);
+                p.fresh_speed = crate::player::top_speed(p.skill(p.attributes.speed, difficulty[side.index()]));
+                p.max_speed = p.fresh_speed;
                 players.push(p);
             }
         }
@@ -150,7 +169,42 @@ impl Match {
             in_play_ticks: 0,
             dead_ticks: 0,
             last_stoppage: None,
+            offsides: scenario.offsides,
+            offside_watch: Watch::default(),
+            pending_foul: None,
+            pending_pass: None,
+            whistle: None,
+            stats: MatchStats::default(),
+            events: EventLog::default(),
         }
+    }
+
+    /// Counts `event` in the statistics and lists it in this step's events.
+    pub(crate) fn record(&mut self, event: Event) {
+        self.stats.record(event);
+        self.events.push(event);
+    }
+
+    /// The match statistics so far (goals, shots, passes, possession, fouls, cards, offsides,
+    /// restarts per team).
+    pub fn stats(&self) -> &MatchStats {
+        &self.stats
+    }
+
+    /// What happened during the last env step (or since the match began, before any step), in
+    /// order; at most [`crate::stats::EVENTS_PER_STEP`].
+    pub fn events(&self) -> &[Event] {
+        self.events.as_slice()
+    }
+
+    /// Forgets the listed events (the env calls this as each step begins).
+    pub(crate) fn clear_events(&mut self) {
+        self.events.clear();
+    }
+
+    /// Whether the offside law is applied in this match.
+    pub fn offsides(&self) -> bool {
+        self.offsides
     }
 
     /// All players, left team first, each team in observation order.
@@ -243,9 +297,14 @@ impl Match {
     /// have as many players. Teams do not change ends, as in GRF.
     pub fn start_second_half(&mut self) {
         crate::rules::kickoff::set_up(self, self.first_kickoff.opponent());
+        self.record(Event::Restart { side: self.first_kickoff.opponent(), mode: GameMode::KickOff });
+        self.offside_watch = Watch::default();
+        self.pending_foul = None;
+        self.pending_pass = None;
         self.ball = Ball::at_rest(self.ball_start);
         for p in &mut self.players {
             p.fatigue = 0.0;
+            p.max_speed = p.fresh_speed;
         }
         self.last_touch = None;
         self.phase = Phase::Play;
@@ -258,6 +317,8 @@ impl Match {
         self.owner = None;
         self.owner_ticks = 0;
         self.last_touch = last_touch.map(|(side, i)| self.global_index(side, i));
+        self.offside_watch = Watch::default();
+        self.pending_pass = None;
     }
 
     /// Moves `side`'s player `index` to `position` (m), standing still.

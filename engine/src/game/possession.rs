@@ -5,6 +5,8 @@ use glam::Vec3;
 
 use super::{GameMode, Match};
 use crate::geometry::pitch::{BALL_RADIUS, in_penalty_area};
+use crate::rules::{self, Stoppage, fouls};
+use crate::stats::Event;
 
 /// Horizontal reach (m) of an outfield player for a loose ball.
 const FOOT_REACH: f32 = 0.7;
@@ -29,6 +31,8 @@ const TACKLE_RANGE: f32 = 0.9;
 const TACKLE_CHANCE: f32 = 0.025;
 /// Sliding tackle reach (m).
 const SLIDE_REACH: f32 = 1.3;
+/// Distance between two players' centres (m) at which a slide meets the man.
+const BODY_CONTACT: f32 = 0.9;
 /// Ticks a dispossessed player cannot touch the ball.
 const TACKLED_COOLDOWN: u16 = 40;
 
@@ -45,11 +49,14 @@ impl Match {
         }
     }
 
-    fn skill(&self, g: usize) -> f32 {
-        0.3 + 0.7 * self.difficulty[self.players[g].side.index()]
+    /// `g`'s skill for `stat` after difficulty and fatigue, in [0, 1].
+    fn skill_of(&self, g: usize, stat: f32) -> f32 {
+        let p = &self.players[g];
+        p.skill(stat, self.difficulty[p.side.index()])
     }
 
-    /// Opponents near the owner try to take the ball.
+    /// Opponents near the owner try to take the ball: standing challenges win it or trip the
+    /// carrier (a foul); a slide's first contact is judged for a foul (Law 12, [`rules::fouls`]).
     fn challenge(&mut self, owner: usize) {
         let side = self.players[owner].side;
         let ball = self.ball.xy();
@@ -60,25 +67,77 @@ impl Match {
                 continue;
             }
             let d2 = p.position.distance_squared(ball);
-            let won = if p.is_sliding() {
-                d2 < SLIDE_REACH * SLIDE_REACH
-            } else if d2 < TACKLE_RANGE * TACKLE_RANGE {
-                let dribbling = self.inputs[owner].dribble;
-                let odds = TACKLE_CHANCE * self.skill(q) / self.skill(owner) * if dribbling { 0.6 } else { 1.0 };
-                self.rng.chance(odds)
-            } else {
-                false
-            };
-            if won {
-                let tackler = &self.players[q];
-                let away = (ball - tackler.position).normalize_or(tackler.facing);
-                let push = if tackler.is_sliding() { 6.0 } else { 1.5 };
-                self.ball.velocity = (tackler.velocity * 0.6 + away * push).extend(0.0);
-                self.owner = None;
-                self.last_touch = Some(q);
-                self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
+            let sliding = p.is_sliding();
+            let body = p.position.distance_squared(self.players[owner].position) < BODY_CONTACT * BODY_CONTACT;
+            let tackling = self.skill_of(q, p.attributes.tackling);
+            if sliding && (d2 < SLIDE_REACH * SLIDE_REACH || body) {
+                let roll = self.rng.unit();
+                let severity = fouls::sliding_severity(&self.players[q], &self.players[owner], ball, tackling, roll);
+                self.tackled(owner, q);
+                if severity > fouls::FOUL_SEVERITY {
+                    self.whistle = fouls::commit(self, q, owner, severity);
+                }
                 return;
             }
+            if sliding || d2 >= TACKLE_RANGE * TACKLE_RANGE {
+                continue;
+            }
+            let dribbling = self.inputs[owner].dribble;
+            let control = self.skill_of(owner, self.players[owner].attributes.ball_control).max(0.05);
+            let odds = TACKLE_CHANCE * (0.3 + tackling) / (0.3 + control) * if dribbling { 0.6 } else { 1.0 };
+            let roll = self.rng.unit();
+            if roll < odds {
+                self.tackled(owner, q);
+                return;
+            }
+            let trip = fouls::trip_chance(&self.players[q], &self.players[owner], tackling);
+            if roll < odds + trip {
+                // A trip: the carrier stumbles and may lose the ball; the referee plays advantage.
+                let severity = fouls::standing_severity(&self.players[q], &self.players[owner], self.rng.unit());
+                self.players[q].touch_cooldown = TACKLED_COOLDOWN;
+                let carrier = &mut self.players[owner];
+                carrier.velocity *= 0.3;
+                if self.rng.chance(0.5) {
+                    self.ball.velocity = (carrier.velocity + carrier.facing * 2.0).extend(0.0);
+                    self.owner = None;
+                    carrier.touch_cooldown = 30;
+                }
+                self.whistle = fouls::commit(self, q, owner, severity);
+                return;
+            }
+        }
+    }
+
+    /// `q` took the ball from `owner` (or knocked it away with a slide).
+    fn tackled(&mut self, owner: usize, q: usize) {
+        let ball = self.ball.xy();
+        let tackler = &self.players[q];
+        let away = (ball - tackler.position).normalize_or(tackler.facing);
+        let push = if tackler.is_sliding() { 6.0 } else { 1.5 };
+        self.ball.velocity = (tackler.velocity * 0.6 + away * push).extend(0.0);
+        self.owner = None;
+        self.last_touch = Some(q);
+        self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
+        self.touched(q);
+    }
+
+    /// Bookkeeping of a touch of the ball by `g`: completes a team-mate's pass, and calls offside
+    /// when `g` was noted in an offside position at the last kick.
+    fn touched(&mut self, g: usize) {
+        let side = self.players[g].side;
+        if rules::offside::judge_touch(self, g) {
+            self.pending_pass = None;
+            let index = self.players[g].index;
+            self.record(Event::Offside { side, player: index });
+            let restart = rules::free_kick::restart(side.opponent(), self.players[g].position);
+            self.whistle = Some(Stoppage::Offside { restart, offender: (side, index) });
+            return;
+        }
+        if let Some(passer) = self.pending_pass.take()
+            && passer != g
+            && self.players[passer].side == side
+        {
+            self.record(Event::PassCompleted { side });
         }
     }
 
@@ -122,15 +181,21 @@ impl Match {
             // speed and with how far he must stretch; a miss lets it fly on.
             let stretch = best_d2.sqrt() / DIVE_REACH;
             let chance = (1.15 - 0.7 * stretch - (relative - SHOT_SPEED) / 30.0).clamp(0.05, 0.95)
-                * (0.75 + 0.25 * self.skill(g));
+                * (0.75 + 0.25 * self.skill_of(g, p.attributes.reaction));
             if !self.rng.chance(chance) {
                 self.players[g].touch_cooldown = 30;
                 return;
             }
         }
         self.last_touch = Some(g);
+        self.touched(g);
+        if self.whistle.is_some() {
+            return;
+        }
+        let p = &self.players[g];
         let body = if !keeper_hands && ball.position.z > CHEST_HEIGHT { 0.6 } else { 1.0 };
-        let limit = if keeper_hands { CATCH_SPEED } else { TRAP_SPEED } * (0.6 + 0.4 * self.skill(g)) * body;
+        let control = self.skill_of(g, p.attributes.ball_control);
+        let limit = if keeper_hands { CATCH_SPEED } else { TRAP_SPEED } * (0.6 + 0.4 * control) * body;
         if p.is_sliding() && !keeper_hands {
             // A slide knocks the ball on in the slide's direction.
             self.ball.velocity = (p.velocity * 1.2).extend(0.0);

@@ -8,6 +8,7 @@ use crate::game::input::Kick;
 use crate::physics::{MotionLimits, TICK_SECONDS, move_player, separate_players};
 use crate::player::DRIBBLE_SPEED;
 use crate::rules::{self, Restart, Stoppage};
+use crate::stats::Event;
 
 /// Ticks a player cannot touch the ball after kicking it.
 const KICK_COOLDOWN: u16 = 25;
@@ -47,8 +48,16 @@ impl Match {
         let owner_before = self.owner;
         self.settle_possession();
         self.owner_ticks = if self.owner.is_some() && self.owner == owner_before { self.owner_ticks + 1 } else { 0 };
-        if let Some(stoppage) = rules::judge(before, self.ball.position, self.last_touch.map(|g| self.players[g].side))
+        if let Some(g) = self.owner.or(self.last_touch) {
+            self.stats.teams[self.players[g].side.index()].possession_ticks += 1;
+        }
+        if let Some(stoppage) = self.whistle.take() {
+            self.stop_play(stoppage);
+        } else if let Some(stoppage) =
+            rules::judge(before, self.ball.position, self.last_touch.map(|g| self.players[g].side))
         {
+            self.stop_play(stoppage);
+        } else if let Some(stoppage) = rules::fouls::advantage(self) {
             self.stop_play(stoppage);
         }
         for p in &mut self.players {
@@ -111,7 +120,15 @@ impl Match {
                 && p.dive_ticks == 0
                 && self.mode == GameMode::Normal
             {
-                let dir = if input.velocity.length_squared() > 0.01 { input.velocity.normalize() } else { p.facing };
+                // Without a direction a slide goes at a ball within reach, else where he faces.
+                let to_ball = self.ball.xy() - p.position;
+                let dir = if input.velocity.length_squared() > 0.01 {
+                    input.velocity.normalize()
+                } else if to_ball.length_squared() < 25.0 {
+                    to_ball.normalize_or(p.facing)
+                } else {
+                    p.facing
+                };
                 let own_goal = -p.side.attack_sign();
                 if p.is_keeper() && crate::geometry::pitch::in_penalty_area(p.position.x, p.position.y, own_goal) {
                     p.dive_ticks = DIVE_TICKS;
@@ -144,31 +161,58 @@ impl Match {
                 }
             }
         };
-        let accuracy = 0.3 + 0.7 * self.difficulty[side.index()];
+        let kicker = &self.players[g];
+        let stat = if kick.kind == KickKind::Shot { kicker.attributes.shooting } else { kicker.attributes.passing };
+        let accuracy = kicker.skill(stat, self.difficulty[side.index()]);
         launch(&mut self.ball, &self.players[g], &kick, target, accuracy, &mut self.rng);
         let p = &mut self.players[g];
         p.touch_cooldown = KICK_COOLDOWN;
         p.pending_kick = None;
+        let index = p.index;
         self.owner = None;
         self.last_touch = Some(g);
+        if kick.kind == KickKind::Shot {
+            let on_target = rules::goal::on_target(&self.ball);
+            self.record(Event::Shot { side, player: index, on_target });
+            self.pending_pass = None;
+        } else {
+            self.record(Event::Pass { side, player: index });
+            self.pending_pass = Some(g);
+        }
+        // No offside from a throw-in, goal kick or corner kick (Law 11).
+        let no_offside = matches!(self.mode, GameMode::ThrowIn | GameMode::GoalKick | GameMode::Corner);
+        self.offside_watch = if self.offsides && !no_offside {
+            let mask = rules::offside::positions(self, side, g, self.ball.xy());
+            rules::offside::Watch { side: Some(side), mask }
+        } else {
+            rules::offside::Watch::default()
+        };
         if self.taker == Some(g) {
             self.end_set_piece();
         }
     }
 
     fn move_players(&mut self) {
-        let limits = MotionLimits::default();
+        let base = MotionLimits::default();
         for g in 0..self.players.len() {
+            let theta = self.difficulty[self.players[g].side.index()];
             let p = &mut self.players[g];
             if !p.active {
                 continue;
             }
+            let speed = p.velocity.length();
+            crate::player::fatigue::update(p, speed * TICK_SECONDS, speed, p.attributes.stamina, p.fresh_speed);
             if p.slide_ticks > 0 || p.dive_ticks > 0 {
                 p.slide_ticks = p.slide_ticks.saturating_sub(1);
                 p.velocity *= 0.96;
                 p.position += p.velocity * TICK_SECONDS;
                 continue;
             }
+            // Acceleration 6–8 m/s² from the attribute (after difficulty and fatigue).
+            let limits = MotionLimits {
+                acceleration: base.acceleration - 1.0 + 2.0 * p.skill(p.attributes.acceleration, theta),
+                ..base
+            };
             let mut input = self.inputs[g];
             if self.taker == Some(g) {
                 // A set-piece taker stands at the ball until he plays it.
@@ -204,21 +248,26 @@ impl Match {
     }
 
     /// Stops play for a goal or a ball out of play and starts the dead time.
-    fn stop_play(&mut self, stoppage: Stoppage) {
+    pub(crate) fn stop_play(&mut self, stoppage: Stoppage) {
         self.last_stoppage = Some(stoppage);
         self.owner = None;
         self.taker = None;
+        self.pending_pass = None;
+        self.pending_foul = None;
+        self.offside_watch = rules::offside::Watch::default();
         let (ticks, restart) = match stoppage {
             Stoppage::Goal { scorer } => {
                 self.score[scorer.index()] += 1;
+                self.record(Event::Goal { side: scorer });
                 self.mode = GameMode::KickOff;
                 (GOAL_DEAD_TICKS, rules::kickoff::after_goal(scorer))
             }
-            Stoppage::Out { restart } => {
+            Stoppage::Out { restart } | Stoppage::Offside { restart, .. } | Stoppage::Foul { restart, .. } => {
                 self.mode = restart.mode;
                 (OUT_DEAD_TICKS, restart)
             }
         };
+        self.record(Event::Restart { side: restart.side, mode: restart.mode });
         for p in &mut self.players {
             p.slide_ticks = 0;
             p.pending_kick = None;

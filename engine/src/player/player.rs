@@ -2,7 +2,7 @@
 
 use glam::Vec2;
 
-use super::Role;
+use super::{Attributes, Role};
 use crate::game::Kick;
 use crate::geometry::Side;
 
@@ -31,8 +31,12 @@ pub struct Player {
     pub cards: u8,
     /// Fatigue in [0, 0.99] (observed as `tired_factor`; 0 = fresh).
     pub fatigue: f32,
-    /// Top sprint speed (m/s), from the team's difficulty (grf.md §5.4, §7.6).
+    /// Top sprint speed now (m/s): his fresh top speed lowered by fatigue (grf.md §5.4, §7.6).
     pub max_speed: f32,
+    /// Top sprint speed when fresh (m/s), from his speed attribute and the team's difficulty.
+    pub fresh_speed: f32,
+    /// Abilities of his team slot (grf.md §7.7), before difficulty and fatigue.
+    pub attributes: Attributes,
     /// Home position in the team's own frame (m), from the formation.
     pub home: Vec2,
     /// Ticks during which the player cannot touch the ball (just kicked it, or was tackled).
@@ -69,6 +73,8 @@ impl Player {
             cards: 0,
             fatigue: 0.0,
             max_speed: SPRINT_SPEED,
+            fresh_speed: SPRINT_SPEED,
+            attributes: Attributes::uniform(1.0),
             home,
             touch_cooldown: 0,
             slide_ticks: 0,
@@ -87,6 +93,13 @@ impl Player {
     #[inline]
     pub fn is_sliding(&self) -> bool {
         self.slide_ticks > 0
+    }
+
+    /// An ability after the team's difficulty and his fatigue: `stat · (0.3 + 0.7·θ) · (1 − 0.3·f)`
+    /// (grf.md §7.6), in [0, 1].
+    #[inline]
+    pub fn skill(&self, stat: f32, theta: f32) -> f32 {
+        stat * (0.3 + 0.7 * theta) * super::fatigue::skill_factor(self.fatigue)
     }
 
     /// Stops the player where he stands and clears any action in progress.

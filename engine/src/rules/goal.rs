@@ -32,6 +32,20 @@ pub fn scored(before: Vec3, after: Vec3) -> Option<Side> {
     None
 }
 
+/// Whether `ball`, just struck, is heading into a goal: its predicted path (2 s, no players)
+/// crosses a goal line between the posts and under the bar. Used to count shots on target.
+pub fn on_target(ball: &crate::physics::Ball) -> bool {
+    let path = crate::ai::BallPath::predict(ball);
+    let mut before = ball.position;
+    for &after in &path.at {
+        if scored(before, after).is_some() {
+            return true;
+        }
+        before = after;
+    }
+    false
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -46,6 +46,10 @@ pub(crate) fn set_up(m: &mut Match, kicking: Side) {
         }
     }
     for g in 0..m.players.len() {
+        if !m.players[g].active {
+            // Sent off: stays off the field.
+            continue;
+        }
         let side = m.players[g].side;
         let [ex, ey] = m.formations[side.index()][m.players[g].index];
         let mut at = formation_to_world(side, ex.min(0.0), ey);

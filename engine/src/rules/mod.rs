@@ -1,12 +1,18 @@
-//! The referee: goals, the ball leaving the field and the restarts that follow, one module per
-//! law. Offside, fouls, free kicks, penalty kicks, cards and half-time belong to the laws issue;
-//! they plug in here: [`judge`] gains checks, and [`Restart`] already carries the free-kick and
-//! penalty modes.
+//! The referee, one module per law: goals ([`goal`]), the ball leaving the field ([`judge`]) and
+//! the restarts that follow ([`kickoff`], [`throw_in`], [`goal_kick`], [`corner_kick`]), offside
+//! ([`offside`]), fouls and the advantage ([`fouls`]), cards and sending-offs ([`cards`]), free
+//! kicks ([`free_kick`]) and penalty kicks ([`penalty_kick`]). Half-time is
+//! [`crate::Match::start_second_half`].
 
+pub mod cards;
 pub mod corner_kick;
+pub mod fouls;
+pub mod free_kick;
 pub mod goal;
 pub mod goal_kick;
 pub mod kickoff;
+pub mod offside;
+pub mod penalty_kick;
 mod set_piece;
 pub mod throw_in;
 
@@ -20,7 +26,7 @@ use crate::geometry::pitch::{GOAL_LINE_OUT_X, TOUCH_LINE_OUT_Y};
 /// How play restarts: the set piece, the team taking it and where (m, global frame).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Restart {
-    /// Kickoff, goal kick, corner kick, throw-in (free kick and penalty with the laws issue).
+    /// Kickoff, goal kick, corner kick, throw-in, free kick or penalty kick.
     pub mode: GameMode,
     /// The team that takes it.
     pub side: Side,
@@ -30,6 +36,7 @@ pub struct Restart {
 
 /// Why play stopped.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub enum Stoppage {
     /// A goal (Law 10) for `scorer`.
     Goal {
@@ -40,6 +47,20 @@ pub enum Stoppage {
     Out {
         /// The restart awarded.
         restart: Restart,
+    },
+    /// An offside offence (Law 11).
+    Offside {
+        /// The free kick for the defenders.
+        restart: Restart,
+        /// The offender (side, index in team).
+        offender: (Side, usize),
+    },
+    /// A foul whistled (Law 12), at once or after the advantage failed.
+    Foul {
+        /// The free kick or penalty kick for the fouled team.
+        restart: Restart,
+        /// The offender (side, index in team).
+        offender: (Side, usize),
     },
 }
 
@@ -80,6 +101,7 @@ pub fn judge(before: Vec3, after: Vec3, last_touch: Option<Side>) -> Option<Stop
 pub(crate) fn set_up_restart(m: &mut Match, restart: Restart) {
     match restart.mode {
         GameMode::KickOff => kickoff::set_up(m, restart.side),
+        GameMode::Penalty => penalty_kick::set_up(m, restart),
         _ => set_piece::set_up(m, restart),
     }
 }

@@ -1,5 +1,5 @@
-//! Shared set-up of a set piece (goal kick, corner kick, throw-in; free and penalty kicks with the
-//! laws issue): ball on the spot, the taker at the ball holding it until he plays it, goalkeepers
+//! Shared set-up of a set piece (goal kick, corner kick, throw-in, free kick; penalty kicks have
+//! their own in [`super::penalty_kick`]): ball on the spot, the taker at the ball holding it until he plays it, goalkeepers
 //! back on their lines (grf.md §7.5), opponents at least 9.15 m away (Laws 13, 16, 17).
 
 use glam::Vec2;
@@ -35,6 +35,9 @@ pub(crate) fn set_up(m: &mut Match, restart: Restart) {
     };
     for g in 0..m.players.len() {
         let p = &mut m.players[g];
+        if !p.active {
+            continue;
+        }
         p.halt();
         if g == taker {
             p.position = restart.spot - inward * 0.5;

@@ -42,8 +42,21 @@ fn main() {
     }
     println!(
         "{:>5} {:>5} {:>7} {:>6} {:>6} {:>6} {:>6} {:>7} {:>7} {:>6} {:>5} {:>5} {:>5} {:>5} {:>5}",
-        "left", "right", "matches", "GD", "±se", "goals", "poss%", "shots", "passes", "compl", "fouls", "cards", "offs",
-        "corn", "throw"
+        "left",
+        "right",
+        "matches",
+        "GD",
+        "±se",
+        "goals",
+        "poss%",
+        "shots",
+        "passes",
+        "compl",
+        "fouls",
+        "cards",
+        "offs",
+        "corn",
+        "throw"
     );
     for (left, right) in pairings {
         let mut diffs = Vec::new();

@@ -321,6 +321,15 @@ impl Match {
         self.pending_pass = None;
     }
 
+    /// Shows `card` to `side`'s player `index` as the referee would after a foul (Law 12): a second
+    /// yellow is a red; a red sends him off (`active` false) unless he is his team's last active
+    /// player; a sent-off keeper is replaced in goal by the first active team-mate. For tests,
+    /// tools and scenarios.
+    pub fn show_card(&mut self, side: Side, index: usize, card: crate::rules::cards::Card) {
+        let g = self.global_index(side, index);
+        crate::rules::cards::show(self, g, card);
+    }
+
     /// Moves `side`'s player `index` to `position` (m), standing still.
     pub fn place_player(&mut self, side: Side, index: usize, position: glam::Vec2) {
         let g = self.global_index(side, index);

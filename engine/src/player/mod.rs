@@ -1,11 +1,11 @@
 //! Players: roles and per-player state.
 
+mod attributes;
+pub mod fatigue;
 #[expect(clippy::module_inception, reason = "one main type per file, named after it")]
 mod player;
 mod role;
-mod attributes;
-pub mod fatigue;
 
+pub use attributes::Attributes;
 pub use player::{DRIBBLE_SPEED, Player, SPRINT_SPEED, WALK_SPEED, nearest_distance, top_speed};
 pub use role::Role;
-pub use attributes::Attributes;

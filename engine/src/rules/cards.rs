@@ -29,6 +29,20 @@ pub const RED_SEVERITY: f32 = 2.0;
 /// How far outside the touchline a sent-off player stands (m).
 const OFF_FIELD: f32 = 3.0;
 
+/// A card the referee shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub enum Card {
+    /// A caution; the second in a match sends the player off.
+    Yellow,
+    /// A sending-off.
+    Red,
+}
+
+/// Shows `card` to `g` (global index), with the consequences of the Law (two yellows = red).
+pub(crate) fn show(m: &mut Match, g: usize, card: Card) {
+    judge(m, g, if card == Card::Red { RED_SEVERITY + 1.0 } else { YELLOW_SEVERITY + 0.1 });
+}
+
 /// Shows the card a foul of `severity` by `g` (global index) deserves, if any.
 pub(crate) fn judge(m: &mut Match, g: usize, severity: f32) {
     let (side, index) = (m.players[g].side, m.players[g].index);

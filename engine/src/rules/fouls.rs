@@ -100,7 +100,10 @@ pub(crate) fn commit(m: &mut Match, offender: usize, victim: usize, severity: f3
     cards::judge(m, offender, severity);
     if penalty {
         m.pending_foul = None;
-        return Some(Stoppage::Foul { restart: penalty_kick::restart(victim_side), offender: (side, m.players[offender].index) });
+        return Some(Stoppage::Foul {
+            restart: penalty_kick::restart(victim_side),
+            offender: (side, m.players[offender].index),
+        });
     }
     m.pending_foul = Some(PendingFoul { offender, victim: victim_side, spot, ticks: 0 });
     None
@@ -117,7 +120,10 @@ pub(crate) fn advantage(m: &mut Match) -> Option<Stoppage> {
     if offenders_have_it || (foul.ticks >= ADVANTAGE_TICKS && holder != Some(foul.victim)) {
         m.pending_foul = None;
         let o = &m.players[foul.offender];
-        return Some(Stoppage::Foul { restart: free_kick::restart(foul.victim, foul.spot), offender: (o.side, o.index) });
+        return Some(Stoppage::Foul {
+            restart: free_kick::restart(foul.victim, foul.spot),
+            offender: (o.side, o.index),
+        });
     }
     if foul.ticks >= ADVANTAGE_TICKS {
         m.pending_foul = None;

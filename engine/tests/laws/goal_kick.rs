@@ -32,3 +32,36 @@ fn over_the_bar_is_not_a_goal() {
     assert_eq!(env.info().game_mode, GameMode::GoalKick);
     assert_eq!(env.info().score, [0, 0]);
 }
+
+/// GRF's `tests/keeper_test` (grf.md §2.4, §10.1 test_keeper_ball), first episode: a left winger
+/// runs the ball over the right goal line; the right keeper holds it for the goal kick at
+/// x ≈ 1.0.
+#[test]
+fn grf_keeper_test() {
+    use touchline_engine::{Action, Env, EnvConfig, PlayerEntry, Scenario};
+    let lazy = |role, x, y| PlayerEntry { lazy: true, ..PlayerEntry::new(role, x, y) };
+    let scenario = Scenario {
+        name: "keeper_test".into(),
+        game_duration: 30,
+        ball_position: [0.9, 0.3],
+        left_team: vec![lazy(Role::GK, -1.0, 0.0), lazy(Role::RM, 0.85, 0.3), lazy(Role::RM, 0.0, 0.0)],
+        right_team: vec![lazy(Role::GK, -1.0, 0.0), lazy(Role::RM, 0.85, 0.3)],
+        ..Scenario::default()
+    };
+    let config = EnvConfig { left_agents: 1, right_agents: 1, ..EnvConfig::default() };
+    let mut env = Env::with_config(scenario, config, 0).unwrap();
+    let mut saw_goal_kick = false;
+    loop {
+        let out = env.step(&[Action::Right, Action::Right]).unwrap();
+        saw_goal_kick |= env.info().game_mode == GameMode::GoalKick;
+        if saw_goal_kick || out.terminated || out.truncated {
+            break;
+        }
+    }
+    assert!(saw_goal_kick);
+    let o = &env.observations()[0];
+    assert!((o.ball[0] - 1.0).abs() < 0.1 && o.ball[1].abs() < 0.1, "ball {:?}", o.ball);
+    assert_eq!(env.game().owner(), Some((Side::Right, 0)), "the keeper holds the ball");
+    assert!((o.right_team[0][0] - 1.0).abs() < 0.1, "right keeper {:?}", o.right_team[0]);
+    assert!((o.left_team[0][0] + 0.9).abs() < 0.1, "left keeper {:?}", o.left_team[0]);
+}

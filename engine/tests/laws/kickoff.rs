@@ -34,3 +34,32 @@ fn the_conceding_team_kicks_off() {
         }
     }
 }
+
+/// GRF's `tests/kickoff_for_goal_loosing_team_test` (grf.md §2.2, §2.4): both keepers stand in the
+/// right goal, so the right team, which starts at the ball, walks it into the empty left goal;
+/// then the left team kicks off in the kickoff formation (its winger on the centre spot).
+#[test]
+fn grf_kickoff_for_goal_loosing_team_test() {
+    use touchline_engine::{Env, PlayerEntry, Role, Scenario};
+    let scenario = Scenario {
+        name: "kickoff_for_goal_loosing_team_test".into(),
+        game_duration: 400,
+        deterministic: true,
+        left_team: vec![PlayerEntry::new(Role::GK, 1.0, 0.0), PlayerEntry::new(Role::RM, 0.8, 0.0)],
+        right_team: vec![PlayerEntry::new(Role::GK, -1.0, 0.0), PlayerEntry::new(Role::RM, 0.0, 0.02)],
+        ..Scenario::default()
+    };
+    let mut env = Env::new(scenario, 0).unwrap();
+    for _ in 0..400 {
+        env.step(&[Action::Idle]).unwrap();
+        if env.info().score != [0, 0] {
+            break;
+        }
+    }
+    assert_eq!(env.info().score, [0, 1], "the right team scores into the empty goal");
+    let game = env.game();
+    let winger = game.team(Side::Left)[1].position;
+    assert!(winger.length() < 2.5, "the conceding team's winger is at the ball: {winger}");
+    let nearest = game.players().iter().min_by(|a, b| a.position.length().total_cmp(&b.position.length())).unwrap();
+    assert_eq!(nearest.side, Side::Left);
+}

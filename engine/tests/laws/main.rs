@@ -1,13 +1,18 @@
-//! One module per law: the restarts of the engine issue (kickoff, goal, throw-in, goal kick,
-//! corner kick), driven through `Env` as a user would see them.
+//! One module per law, driven through `Env` as a user would see them, modelled on GRF's test
+//! scenarios (grf.md §2.4, §10.1) where GRF has one.
 
 #[path = "../common/mod.rs"]
 mod common;
 
+mod cards;
 mod corner_kick;
+mod fouls;
+mod goal;
 mod goal_kick;
 mod half_time;
 mod kickoff;
+mod offside;
+mod penalty_kick;
 mod throw_in;
 
 use glam::Vec3;

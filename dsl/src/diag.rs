@@ -6,7 +6,7 @@ use thiserror::Error;
 use touchline_engine::EngineError;
 
 /// Why a scenario could not be loaded. Every variant is a [`miette::Diagnostic`] with a stable
-/// code: `tl::E001` … `tl::E005`. Codes are never reused for a different error.
+/// code: `tl::E001` … `tl::E004`, or the compiler's `tl::E1xx`. Codes are never reused for a different error.
 #[derive(Debug, Error, Diagnostic)]
 #[non_exhaustive]
 pub enum LoadError {
@@ -53,20 +53,11 @@ pub enum LoadError {
         source: EngineError,
     },
 
-    /// `tl::E005`: a `.tl` source was given, but the scenario language is not implemented yet.
-    #[error("cannot load `{path}`: the scenario language (.tl) is not available yet")]
-    #[diagnostic(
-        code(tl::E005),
-        help(
-            "load a stdlib scenario by name (e.g. `academy_empty_goal_close`) or a compiled \
-             scenario: a `.json` file holding a serialised `Scenario`, like the files in \
-             stdlib-scenarios/"
-        )
-    )]
-    ScenarioLanguageUnavailable {
-        /// The path as given.
-        path: String,
-    },
+    /// A `.tl` source did not compile: every diagnostic of the compile (`tl::E1xx`, with any
+    /// warnings). (`tl::E005`, "language not available", is retired.)
+    #[error(transparent)]
+    #[diagnostic(transparent)]
+    Compile(Box<crate::Diagnostics>),
 }
 
 /// The details of a `tl::E003` error ([`LoadError::Json`]): serde_json's message and position, and
@@ -98,14 +89,15 @@ pub struct JsonError {
 }
 
 impl LoadError {
-    /// The diagnostic's stable code, e.g. `"tl::E001"` (the same as [`Diagnostic::code`]).
+    /// The diagnostic's stable code, e.g. `"tl::E001"` (the same as [`Diagnostic::code`]); for a
+    /// failed compile, the code of its first error.
     pub fn code_str(&self) -> &'static str {
         match self {
             LoadError::UnknownScenario { .. } => "tl::E001",
             LoadError::Unreadable { .. } => "tl::E002",
             LoadError::Json(_) => "tl::E003",
             LoadError::Invalid { .. } => "tl::E004",
-            LoadError::ScenarioLanguageUnavailable { .. } => "tl::E005",
+            LoadError::Compile(d) => d.errors().next().map_or("tl::E100", |e| e.code.as_str()),
         }
     }
 
@@ -214,6 +206,20 @@ fn token_span(text: &str, end: usize) -> SourceSpan {
 /// The output depends only on the diagnostic, so it is stable for snapshot tests and for the
 /// messages of Python exceptions.
 pub fn render_plain(err: &dyn Diagnostic) -> String {
+    // A compile's diagnostics are a list without a message of their own: render each of them.
+    if err.labels().is_none()
+        && err.help().is_none()
+        && let Some(related) = err.related()
+    {
+        let parts: Vec<String> = related.map(render_one).collect();
+        if !parts.is_empty() {
+            return parts.join("\n");
+        }
+    }
+    render_one(err)
+}
+
+fn render_one(err: &dyn Diagnostic) -> String {
     let mut out = String::new();
     let handler =
         GraphicalReportHandler::new_themed(GraphicalTheme::unicode_nocolor()).with_width(80).with_links(false);
@@ -263,8 +269,8 @@ mod tests {
 
     #[test]
     fn codes() {
-        let err = LoadError::ScenarioLanguageUnavailable { path: "x.tl".into() };
-        assert_eq!(err.code_str(), "tl::E005");
-        assert_eq!(err.code().map(|c| c.to_string()).as_deref(), Some("tl::E005"));
+        let err = LoadError::UnknownScenario { name: "x".into(), help: String::new() };
+        assert_eq!(err.code_str(), "tl::E001");
+        assert_eq!(err.code().map(|c| c.to_string()).as_deref(), Some("tl::E001"));
     }
 }

@@ -19,10 +19,17 @@
 //! ```
 #![deny(missing_docs)]
 
+mod compile;
 mod diag;
+pub mod diagnostic;
 mod load;
+mod print;
 pub mod stdlib;
 mod suggest;
+pub mod syntax;
 
+pub use compile::{Compiled, PRELUDE, compile, compile_file};
 pub use diag::{JsonError, LoadError, render_plain};
+pub use diagnostic::{Code, Diagnostic, Diagnostics};
 pub use load::{load, load_file, load_json};
+pub use print::scenario_to_tl;

@@ -12,23 +12,28 @@ use crate::{stdlib, suggest};
 /// `spec` is tried in this order:
 /// 1. a stdlib scenario name ([`stdlib::names`]), e.g. `"academy_empty_goal_close"`;
 /// 2. a path ending in `.json`: a compiled scenario, read and parsed as in [`load_file`];
-/// 3. a path ending in `.tl`: a scenario-language source (not available yet).
+/// 3. a path ending in `.tl`: a scenario-language source, compiled by [`crate::compile_file`].
+///
+/// Stdlib names include GRF's test scenarios (`tests/corner_test`, …).
 ///
 /// # Errors
 /// - `tl::E001` [`LoadError::UnknownScenario`]: anything else, with the closest stdlib name(s);
 /// - `tl::E002` [`LoadError::Unreadable`]: the `.json` file cannot be read;
 /// - `tl::E003` [`LoadError::Json`]: the file is not a compiled scenario (syntax or shape);
 /// - `tl::E004` [`LoadError::Invalid`]: the scenario fails [`Scenario::validate`];
-/// - `tl::E005` [`LoadError::ScenarioLanguageUnavailable`]: a `.tl` path.
+/// - [`LoadError::Compile`]: a `.tl` file (or a stdlib source) that does not compile, with every
+///   diagnostic.
 pub fn load(spec: &str) -> Result<Scenario, LoadError> {
-    if let Some(text) = stdlib::source(spec) {
-        return load_json(text, spec);
+    if let Some(text) = stdlib::tl_source(spec) {
+        return crate::compile(text, &format!("stdlib/{spec}.tl"))
+            .map(|c| c.scenario)
+            .map_err(|d| LoadError::Compile(Box::new(d)));
     }
     let path = Path::new(spec);
     match path.extension().and_then(|e| e.to_str()) {
         Some(ext) if ext.eq_ignore_ascii_case("json") => load_file(path),
         Some(ext) if ext.eq_ignore_ascii_case("tl") => {
-            Err(LoadError::ScenarioLanguageUnavailable { path: spec.to_owned() })
+            crate::compile_file(path).map(|c| c.scenario).map_err(|d| LoadError::Compile(Box::new(d)))
         }
         _ => Err(unknown(spec)),
     }

@@ -35,6 +35,63 @@ const SCENARIOS: &[(&str, &str)] = &[
     ("test_example_multiagent", include_str!("../../stdlib-scenarios/test_example_multiagent.json")),
 ];
 
+/// `.tl` sources of the stdlib, by name (sorted in byte order); `tests/…` are GRF's test scenarios.
+const TL_SOURCES: &[(&str, &str)] = &[
+    ("11_vs_11_competition", include_str!("../../stdlib-scenarios/11_vs_11_competition.tl")),
+    ("11_vs_11_easy_stochastic", include_str!("../../stdlib-scenarios/11_vs_11_easy_stochastic.tl")),
+    ("11_vs_11_hard_stochastic", include_str!("../../stdlib-scenarios/11_vs_11_hard_stochastic.tl")),
+    ("11_vs_11_kaggle", include_str!("../../stdlib-scenarios/11_vs_11_kaggle.tl")),
+    ("11_vs_11_stochastic", include_str!("../../stdlib-scenarios/11_vs_11_stochastic.tl")),
+    ("1_vs_1_easy", include_str!("../../stdlib-scenarios/1_vs_1_easy.tl")),
+    ("5_vs_5", include_str!("../../stdlib-scenarios/5_vs_5.tl")),
+    ("academy_3_vs_1_with_keeper", include_str!("../../stdlib-scenarios/academy_3_vs_1_with_keeper.tl")),
+    ("academy_corner", include_str!("../../stdlib-scenarios/academy_corner.tl")),
+    ("academy_counterattack_easy", include_str!("../../stdlib-scenarios/academy_counterattack_easy.tl")),
+    ("academy_counterattack_hard", include_str!("../../stdlib-scenarios/academy_counterattack_hard.tl")),
+    ("academy_empty_goal", include_str!("../../stdlib-scenarios/academy_empty_goal.tl")),
+    ("academy_empty_goal_close", include_str!("../../stdlib-scenarios/academy_empty_goal_close.tl")),
+    (
+        "academy_pass_and_shoot_with_keeper",
+        include_str!("../../stdlib-scenarios/academy_pass_and_shoot_with_keeper.tl"),
+    ),
+    (
+        "academy_run_pass_and_shoot_with_keeper",
+        include_str!("../../stdlib-scenarios/academy_run_pass_and_shoot_with_keeper.tl"),
+    ),
+    ("academy_run_to_score", include_str!("../../stdlib-scenarios/academy_run_to_score.tl")),
+    ("academy_run_to_score_with_keeper", include_str!("../../stdlib-scenarios/academy_run_to_score_with_keeper.tl")),
+    ("academy_single_goal_versus_lazy", include_str!("../../stdlib-scenarios/academy_single_goal_versus_lazy.tl")),
+    ("test_example_multiagent", include_str!("../../stdlib-scenarios/test_example_multiagent.tl")),
+    ("tests/11_vs_11_deterministic", include_str!("../../stdlib-scenarios/tests/11_vs_11_deterministic.tl")),
+    ("tests/11_vs_11_easy_deterministic", include_str!("../../stdlib-scenarios/tests/11_vs_11_easy_deterministic.tl")),
+    ("tests/11_vs_11_hard_deterministic", include_str!("../../stdlib-scenarios/tests/11_vs_11_hard_deterministic.tl")),
+    (
+        "tests/11_vs_11_single_goal_deterministic",
+        include_str!("../../stdlib-scenarios/tests/11_vs_11_single_goal_deterministic.tl"),
+    ),
+    (
+        "tests/11_vs_11_single_goal_stochastic",
+        include_str!("../../stdlib-scenarios/tests/11_vs_11_single_goal_stochastic.tl"),
+    ),
+    (
+        "tests/11_vs_4_offence_deterministic",
+        include_str!("../../stdlib-scenarios/tests/11_vs_4_offence_deterministic.tl"),
+    ),
+    ("tests/11_vs_4_offence_stochastic", include_str!("../../stdlib-scenarios/tests/11_vs_4_offence_stochastic.tl")),
+    ("tests/corner_test", include_str!("../../stdlib-scenarios/tests/corner_test.tl")),
+    ("tests/goal_test", include_str!("../../stdlib-scenarios/tests/goal_test.tl")),
+    ("tests/keeper_test", include_str!("../../stdlib-scenarios/tests/keeper_test.tl")),
+    (
+        "tests/kickoff_for_goal_loosing_team_test",
+        include_str!("../../stdlib-scenarios/tests/kickoff_for_goal_loosing_team_test.tl"),
+    ),
+    ("tests/multiagent_wrapper", include_str!("../../stdlib-scenarios/tests/multiagent_wrapper.tl")),
+    ("tests/offside_test", include_str!("../../stdlib-scenarios/tests/offside_test.tl")),
+    ("tests/penalty", include_str!("../../stdlib-scenarios/tests/penalty.tl")),
+    ("tests/second_half", include_str!("../../stdlib-scenarios/tests/second_half.tl")),
+    ("tests/symmetric", include_str!("../../stdlib-scenarios/tests/symmetric.tl")),
+];
+
 /// Names of all stdlib scenarios, sorted (byte order), e.g. `"academy_empty_goal_close"`.
 const NAMES: &[&str] = &[
     "11_vs_11_competition",
@@ -58,14 +115,24 @@ const NAMES: &[&str] = &[
     "test_example_multiagent",
 ];
 
-/// Names of all stdlib scenarios, sorted in byte order.
+/// Names of the stdlib's playable scenarios (GRF's top-level ones), sorted in byte order.
 pub fn names() -> &'static [&'static str] {
     NAMES
+}
+
+/// Names of GRF's test scenarios in the stdlib (`tests/corner_test`, …), sorted.
+pub fn test_names() -> impl Iterator<Item = &'static str> {
+    TL_SOURCES.iter().map(|(n, _)| *n).filter(|n| n.starts_with("tests/"))
 }
 
 /// The compiled JSON text of the stdlib scenario `name`, or `None` if there is no such scenario.
 pub fn source(name: &str) -> Option<&'static str> {
     SCENARIOS.binary_search_by(|(n, _)| (*n).cmp(name)).ok().map(|i| SCENARIOS[i].1)
+}
+
+/// The `.tl` source of the stdlib scenario `name`, or `None` if there is no such scenario.
+pub fn tl_source(name: &str) -> Option<&'static str> {
+    TL_SOURCES.binary_search_by(|(n, _)| (*n).cmp(name)).ok().map(|i| TL_SOURCES[i].1)
 }
 
 /// The stdlib scenario `name`, parsed; `None` if there is no such scenario.

@@ -151,10 +151,17 @@ fn two_goalkeepers_is_e004() {
 }
 
 #[test]
-fn tl_source_is_e005() {
+fn missing_tl_source_is_e112() {
     let err = load("drills/my_drill.tl").unwrap_err();
-    assert_eq!(code(&err), "tl::E005");
+    assert_eq!(code(&err), "tl::E112");
     insta::assert_snapshot!(render_plain(&err));
+}
+
+#[test]
+fn tl_source_compiles() {
+    let file = TempFile::new("drill.tl", "scenario drill {\n  extends academy_empty_goal\n  difficulty 0.2\n}\n");
+    let s = load(file.spec()).unwrap();
+    assert_eq!((s.name.as_str(), s.right_team_difficulty, s.game_duration), ("drill", 0.2, 400));
 }
 
 #[test]
@@ -167,7 +174,7 @@ fn codes_are_stable() {
         load("x.tl").unwrap_err(),
     ];
     let codes: Vec<String> = errors.iter().map(code).collect();
-    assert_eq!(codes, ["tl::E001", "tl::E002", "tl::E003", "tl::E004", "tl::E005"]);
+    assert_eq!(codes, ["tl::E001", "tl::E002", "tl::E003", "tl::E004", "tl::E112"]);
     for err in &errors {
         assert_eq!(err.code_str(), code(err));
     }

@@ -1,0 +1,451 @@
+//! Applying one definition's statements on top of what it extends.
+
+use std::collections::HashMap;
+
+use touchline_engine::scenario::{Body, EndCondition, Require, RewardKind, RewardTerm};
+use touchline_engine::{PlayerEntry, Role, Scenario};
+
+use super::pitch;
+use super::value::{Frame, Reader, suggest_help};
+use crate::diagnostic::{Code, Diagnostic, Source};
+use crate::suggest;
+use crate::syntax::{self, Condition, Definition, Expr, ExprKind, Flag, Span, StatementKind};
+
+/// Where a part of the compiled scenario was written, for diagnostics found after merging.
+#[derive(Clone, Debug)]
+pub(crate) struct Loc {
+    pub(crate) source: Source,
+    pub(crate) span: Span,
+}
+
+/// The places the merged scenario's parts come from.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Origins {
+    /// The `team` statement of each side.
+    pub(crate) team: [Option<Loc>; 2],
+    /// Each player's line (or the formation), per side.
+    pub(crate) players: [Vec<Loc>; 2],
+    /// The `ball` statement.
+    pub(crate) ball: Option<Loc>,
+}
+
+/// The configuration keys and what they hold.
+const KEYS: [&str; 12] = [
+    "game_duration",
+    "deterministic",
+    "offsides",
+    "end_episode_on_score",
+    "end_episode_on_out_of_play",
+    "end_episode_on_possession_change",
+    "left_team_difficulty",
+    "right_team_difficulty",
+    "difficulty",
+    "second_half",
+    "control_all_players",
+    "swap_teams_on_odd_episodes",
+];
+
+/// Applies `def`'s statements (except `extends`, which the caller resolved) to `s`.
+pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r: &mut Reader<'_>) {
+    let mut seen: HashMap<String, Span> = HashMap::new();
+    let mut rewards_cleared = false;
+    let mut requires = Vec::new();
+    for st in &def.statements {
+        let key = match &st.kind {
+            StatementKind::Extends(_) => "extends".to_owned(),
+            StatementKind::Ball(_) => "ball".to_owned(),
+            StatementKind::OddBall(_) => "on odd episodes ball".to_owned(),
+            StatementKind::SwapTeams => "on odd episodes swap teams".to_owned(),
+            StatementKind::Team(t) => format!("team {}", side_name(t.side.value)),
+            StatementKind::End(_) => "end when".to_owned(),
+            StatementKind::StartFrom(_) => "start from".to_owned(),
+            StatementKind::Setting { key, .. } => key.value.clone(),
+            StatementKind::Require { .. } | StatementKind::Reward { .. } => String::new(),
+        };
+        if !key.is_empty() {
+            if let Some(first) = seen.get(&key) {
+                r.diags.push(
+                    Diagnostic::new(
+                        Code::Duplicate,
+                        format!("`{key}` is given twice"),
+                        r.source,
+                        st.span,
+                        "again here",
+                    )
+                    .with_label(*first, "first given here")
+                    .with_help("a definition states each thing once; remove one of them"),
+                );
+                continue;
+            }
+            seen.insert(key, st.span);
+        }
+        match &st.kind {
+            StatementKind::Extends(_) => {}
+            StatementKind::Setting { key, value } => setting(s, key, value, r),
+            StatementKind::Ball(place) => {
+                if let Some((nominal, random)) = r.place(place, Frame::Ball) {
+                    s.ball_position = nominal;
+                    s.ball_random = random;
+                    origins.ball = Some(Loc { source: r.source.clone(), span: st.span });
+                }
+            }
+            StatementKind::OddBall(place) => match r.place(place, Frame::Ball) {
+                Some((nominal, None)) => s.odd_episode_ball_position = Some(nominal),
+                Some((_, Some(_))) => r.error(
+                    Code::WrongType,
+                    "on odd episodes the ball starts at a fixed point",
+                    st.span,
+                    "random place not allowed here",
+                ),
+                None => {}
+            },
+            StatementKind::SwapTeams => s.swap_teams_on_odd_episodes = true,
+            StatementKind::Team(t) => team(t, s, origins, r),
+            StatementKind::Require { .. } => requires.push(st),
+            StatementKind::Reward { terms, weight } => {
+                if !rewards_cleared {
+                    s.rewards.clear();
+                    rewards_cleared = true;
+                }
+                let weight = weight.as_ref().map_or(Some(1.0), |w| r.plain_number(w, "a weight").map(|v| v as f32));
+                for term in terms {
+                    if let (Some(reward), Some(weight)) = (reward_kind(term, r), weight) {
+                        s.rewards.push(RewardTerm { reward, weight });
+                    }
+                }
+            }
+            StatementKind::End(conditions) => end(conditions, s, r),
+            StatementKind::StartFrom(path) => r.error_help(
+                Code::StartState,
+                "`start from` is not available yet",
+                path.span,
+                "saved states cannot start a scenario yet",
+                "start from the scenario's own placement; saved states load in Python with env.unwrapped.set_state",
+            ),
+        }
+    }
+    // Requires name players, so they are read once this body's teams are in place.
+    if !requires.is_empty() {
+        s.requires.clear();
+    }
+    for st in requires {
+        if let StatementKind::Require { lhs, at_least, rhs } = &st.kind
+            && let Some(req) = require(lhs, *at_least, rhs, s, r)
+        {
+            s.requires.push(req);
+        }
+    }
+}
+
+fn side_name(side: syntax::Side) -> &'static str {
+    match side {
+        syntax::Side::Left => "left",
+        syntax::Side::Right => "right",
+    }
+}
+
+fn setting(s: &mut Scenario, key: &syntax::Spanned<String>, value: &Expr, r: &mut Reader<'_>) {
+    let k = key.value.as_str();
+    match k {
+        "game_duration" => s.game_duration = r.steps(value, k, 1).unwrap_or(s.game_duration),
+        "second_half" => s.second_half = r.steps(value, k, 0).unwrap_or(s.second_half),
+        "left_team_difficulty" => s.left_team_difficulty = r.fraction(value, k).unwrap_or(s.left_team_difficulty),
+        "right_team_difficulty" | "difficulty" => {
+            s.right_team_difficulty = r.fraction(value, k).unwrap_or(s.right_team_difficulty);
+        }
+        _ => {
+            let target = match k {
+                "deterministic" => &mut s.deterministic,
+                "offsides" => &mut s.offsides,
+                "end_episode_on_score" => &mut s.end_episode_on_score,
+                "end_episode_on_out_of_play" => &mut s.end_episode_on_out_of_play,
+                "end_episode_on_possession_change" => &mut s.end_episode_on_possession_change,
+                "control_all_players" => &mut s.control_all_players,
+                "swap_teams_on_odd_episodes" => &mut s.swap_teams_on_odd_episodes,
+                _ => {
+                    let close = suggest::closest(k, &KEYS);
+                    r.error_help(
+                        Code::UnknownKey,
+                        format!("unknown key `{k}`"),
+                        key.span,
+                        "not a configuration key",
+                        suggest_help(&close, &format!("the keys are {}", KEYS.join(", "))),
+                    );
+                    return;
+                }
+            };
+            if let Some(b) = r.boolean(value) {
+                *target = b;
+            }
+        }
+    }
+}
+
+fn team(t: &syntax::Team, s: &mut Scenario, origins: &mut Origins, r: &mut Reader<'_>) {
+    let side = t.side.value;
+    let mut entries = Vec::new();
+    let mut locs = Vec::new();
+    if let Some(name) = &t.formation {
+        match pitch::formation(&name.value) {
+            Some(players) => {
+                for &(role, x, y) in players {
+                    entries.push(PlayerEntry::new(role, x, y));
+                    locs.push(Loc { source: r.source.clone(), span: name.span });
+                }
+            }
+            None => {
+                let close = suggest::closest(&name.value, &pitch::FORMATION_NAMES);
+                r.error_help(
+                    Code::UnknownFormation,
+                    format!("unknown formation `{}`", name.value),
+                    name.span,
+                    "not a formation",
+                    suggest_help(&close, &format!("the formations are {}", pitch::FORMATION_NAMES.join(", "))),
+                );
+            }
+        }
+    }
+    for p in &t.players {
+        let role = Role::from_name(&p.role.value);
+        if role.is_none() {
+            let names: Vec<&str> = Role::ALL.iter().map(|r| r.name()).collect();
+            let upper = p.role.value.to_ascii_uppercase();
+            let close =
+                if Role::from_name(&upper).is_some() { vec![] } else { suggest::closest(&p.role.value, &names) };
+            let help = if Role::from_name(&upper).is_some() {
+                format!("roles are upper case: `{upper}`")
+            } else {
+                suggest_help(&close, &format!("the roles are {}", names.join(" ")))
+            };
+            r.error_help(
+                Code::UnknownRole,
+                format!("unknown role `{}`", p.role.value),
+                p.role.span,
+                "not a role",
+                help,
+            );
+        }
+        let place = r.place(&p.place, Frame::Player);
+        let (Some(role), Some((nominal, random))) = (role, place) else { continue };
+        let mut e = PlayerEntry::new(role, nominal[0], nominal[1]);
+        e.random = random;
+        for f in &p.flags {
+            match f.value {
+                Flag::Lazy => e.lazy = true,
+                Flag::Controllable => e.controllable = true,
+                Flag::NotControllable => e.controllable = false,
+            }
+        }
+        entries.push(e);
+        locs.push(Loc { source: r.source.clone(), span: p.span });
+    }
+    let i = usize::from(side == syntax::Side::Right);
+    origins.team[i] = Some(Loc { source: r.source.clone(), span: t.side.span });
+    origins.players[i] = locs;
+    match side {
+        syntax::Side::Left => s.left_team = entries,
+        syntax::Side::Right => s.right_team = entries,
+    }
+}
+
+fn reward_kind(term: &syntax::RewardTerm, r: &mut Reader<'_>) -> Option<RewardKind> {
+    let e = match term {
+        syntax::RewardTerm::Script(path) => return Some(RewardKind::Script { path: path.value.clone() }),
+        syntax::RewardTerm::Expr(e) => e,
+    };
+    let (name, args) = match &e.kind {
+        ExprKind::Path { head, field: None } => (head, &[][..]),
+        ExprKind::Call { name, args } => (name, args.as_slice()),
+        _ => {
+            r.error(Code::WrongType, format!("expected a reward, found {}", e.describe()), e.span, "not a reward");
+            return None;
+        }
+    };
+    match name.value.as_str() {
+        "scoring" if args.is_empty() => Some(RewardKind::Scoring),
+        "checkpoint" | "checkpoints" => {
+            let (mut count, mut value) = (10u8, 0.1f32);
+            for (i, a) in args.iter().enumerate() {
+                let which = a.name.as_ref().map_or(if i == 0 { "count" } else { "value" }, |n| n.value.as_str());
+                match which {
+                    "count" => {
+                        let n = r.steps(&a.value, "the checkpoint count", 1)?;
+                        if n > 100 {
+                            r.error(Code::OutOfRange, "at most 100 checkpoints", a.value.span, "too many");
+                            return None;
+                        }
+                        count = n as u8;
+                    }
+                    "value" => value = r.plain_number(&a.value, "the checkpoint value")? as f32,
+                    other => {
+                        let span = a.name.as_ref().map_or(a.value.span, |n| n.span);
+                        r.error_help(
+                            Code::Arguments,
+                            format!("`checkpoint` has no argument `{other}`"),
+                            span,
+                            "unknown argument",
+                            "write `checkpoint(count: 10, value: 0.1)`",
+                        );
+                        return None;
+                    }
+                }
+            }
+            Some(RewardKind::Checkpoints { count, value })
+        }
+        other => {
+            let close = suggest::closest(other, &["scoring", "checkpoint"]);
+            r.error_help(
+                Code::UnknownFunction,
+                format!("unknown reward `{other}`"),
+                name.span,
+                "not a reward",
+                suggest_help(&close, "the rewards are scoring, checkpoint(count, value) and script \"file.rhai\""),
+            );
+            None
+        }
+    }
+}
+
+/// The end conditions a name may give.
+const CONDITIONS: [&str; 3] = ["score", "out_of_play", "possession_change"];
+
+fn end(conditions: &[Condition], s: &mut Scenario, r: &mut Reader<'_>) {
+    s.end_episode_on_score = false;
+    s.end_episode_on_out_of_play = false;
+    s.end_episode_on_possession_change = false;
+    s.end_when.clear();
+    for c in conditions {
+        match c {
+            Condition::Name(n) => match n.value.as_str() {
+                "score" => s.end_episode_on_score = true,
+                "out_of_play" => s.end_episode_on_out_of_play = true,
+                "possession_change" => s.end_episode_on_possession_change = true,
+                other => {
+                    let close = suggest::closest(other, &CONDITIONS);
+                    r.error_help(
+                        Code::UnknownCondition,
+                        format!("unknown end condition `{other}`"),
+                        n.span,
+                        "not an end condition",
+                        suggest_help(
+                            &close,
+                            "the conditions are score, out_of_play, possession_change, steps >= N, ball in REGION, script \"file.rhai\"",
+                        ),
+                    );
+                }
+            },
+            Condition::Steps(e) => {
+                if let Some(n) = r.steps(e, "the step limit", 1) {
+                    s.end_when.push(EndCondition::Steps(n));
+                }
+            }
+            Condition::BallIn(e) => {
+                if let Some(region) = r.region(e, Frame::Ball) {
+                    s.end_when.push(EndCondition::BallIn(region));
+                }
+            }
+            Condition::Script(path) => s.end_when.push(EndCondition::Script { path: path.value.clone() }),
+        }
+    }
+}
+
+fn require(lhs: &Expr, at_least: bool, rhs: &Expr, s: &Scenario, r: &mut Reader<'_>) -> Option<Require> {
+    let ExprKind::Call { name, args } = &lhs.kind else {
+        r.error(Code::WrongType, format!("expected `distance(a, b)`, found {}", lhs.describe()), lhs.span, "here");
+        return None;
+    };
+    if name.value != "distance" {
+        let close = suggest::closest(&name.value, &["distance"]);
+        r.error_help(
+            Code::UnknownFunction,
+            format!("unknown constraint `{}`", name.value),
+            name.span,
+            "not a constraint",
+            suggest_help(&close, "constraints are `distance(a, b) >= D m` and `distance(a, b) <= D m`"),
+        );
+        return None;
+    }
+    if args.len() != 2 {
+        r.error(Code::Arguments, format!("`distance` takes 2 arguments, found {}", args.len()), lhs.span, "here");
+        return None;
+    }
+    let a = body(&args[0].value, s, r);
+    let b = body(&args[1].value, s, r);
+    let metres = r.metres(rhs);
+    let (a, b, metres) = (a?, b?, metres?);
+    Some(if at_least { Require::MinDistance { a, b, metres } } else { Require::MaxDistance { a, b, metres } })
+}
+
+/// `ball`, `left[i]`, `right[i]`, `left.ROLE` (the only player of that role).
+fn body(e: &Expr, s: &Scenario, r: &mut Reader<'_>) -> Option<Body> {
+    let team_of = |side: &str| match side {
+        "left" => Some((&s.left_team, true)),
+        "right" => Some((&s.right_team, false)),
+        _ => None,
+    };
+    let make = |left: bool, i: usize| if left { Body::Left(i) } else { Body::Right(i) };
+    let usage = "name the ball, `left[i]`, `right[i]` (0-based, in the team's order) or `left.ROLE`";
+    match &e.kind {
+        ExprKind::Path { head, field: None } if head.value == "ball" => Some(Body::Ball),
+        ExprKind::Index { name, args } if team_of(&name.value).is_some() => {
+            let (team, left) = team_of(&name.value)?;
+            let [arg] = args.as_slice() else {
+                r.error(Code::Arguments, "a player index is one number", e.span, "here");
+                return None;
+            };
+            let i = r.steps(&arg.value, "a player index", 0)? as usize;
+            if i >= team.len() {
+                r.error_help(
+                    Code::UnknownPlayer,
+                    format!("{} has {} players; there is no {}[{i}]", name.value, team.len(), name.value),
+                    e.span,
+                    "no such player",
+                    "indices are 0-based, in the order the team lists its players",
+                );
+                return None;
+            }
+            Some(make(left, i))
+        }
+        ExprKind::Path { head, field: Some(role) } if team_of(&head.value).is_some() => {
+            let (team, left) = team_of(&head.value)?;
+            let matching: Vec<usize> =
+                team.iter().enumerate().filter(|(_, p)| p.role.name() == role.value).map(|(i, _)| i).collect();
+            match matching.as_slice() {
+                [i] => Some(make(left, *i)),
+                [] => {
+                    r.error_help(
+                        Code::UnknownPlayer,
+                        format!("{} has no {}", head.value, role.value),
+                        e.span,
+                        "no such player",
+                        usage,
+                    );
+                    None
+                }
+                several => {
+                    r.error_help(
+                        Code::UnknownPlayer,
+                        format!("{} has {} players with role {}", head.value, several.len(), role.value),
+                        e.span,
+                        "ambiguous",
+                        format!(
+                            "name one by index: {}",
+                            several.iter().map(|i| format!("{}[{i}]", head.value)).collect::<Vec<_>>().join(", ")
+                        ),
+                    );
+                    None
+                }
+            }
+        }
+        _ => {
+            r.error_help(
+                Code::UnknownPlayer,
+                format!("`{}` is not a player or the ball", e.describe()),
+                e.span,
+                "here",
+                usage,
+            );
+            None
+        }
+    }
+}

@@ -1,0 +1,152 @@
+//! Checks on the merged scenario: team sizes, goalkeepers, positions on the pitch, `require`
+//! constraints that can hold, and the engine's own validation as a backstop.
+
+use touchline_engine::scenario::{MAX_PLACEMENT_TRIES, Spot};
+use touchline_engine::{MAX_PLAYERS_PER_TEAM, Role, Scenario};
+
+use super::body::{Loc, Origins};
+use crate::diagnostic::{Code, Diagnostic, Diagnostics, Source};
+use crate::syntax::Span;
+
+/// The rim: the farthest a player or the ball may start (60 m × 40 m; grf.md §7.4).
+const RIM: [f32; 2] = [1.1, 0.48];
+/// The lines: |x| ≤ 1, |y| ≤ 0.42.
+const LINES: [f32; 2] = [1.0, 0.42];
+/// Placements drawn to estimate how often the `require` constraints hold.
+const ACCEPTANCE_SAMPLES: u32 = 4_000;
+/// Largest accepted chance that one reset runs out of retries.
+const MAX_FAILURE: f64 = 1e-9;
+
+pub(super) fn check(s: &Scenario, o: &Origins, source: &Source, name_span: Span, diags: &mut Diagnostics) {
+    let at_name = |code, message: String, label: &str| Diagnostic::new(code, message, source, name_span, label);
+    for (i, (side, team)) in [("left", &s.left_team), ("right", &s.right_team)].into_iter().enumerate() {
+        let team_loc = o.team[i].clone();
+        let at_team = |code, message: String, label: &str| match &team_loc {
+            Some(l) => Diagnostic::new(code, message, &l.source, l.span, label),
+            None => at_name(code, message, label),
+        };
+        if team.is_empty() {
+            diags.push(at_team(Code::PlayerCount, format!("the {side} team has no players"), "no players").with_help(
+                format!("add `team {side} {{ GK at (-1, 0) … }}`, a formation, or extend a scenario that has one"),
+            ));
+            continue;
+        }
+        if team.len() > MAX_PLAYERS_PER_TEAM {
+            let d = match o.players[i].get(MAX_PLAYERS_PER_TEAM) {
+                Some(l) => Diagnostic::new(
+                    Code::PlayerCount,
+                    format!("the {side} team has {} players", team.len()),
+                    &l.source,
+                    l.span,
+                    "the 12th player",
+                ),
+                None => at_team(
+                    Code::PlayerCount,
+                    format!("the {side} team has {} players", team.len()),
+                    "too many players",
+                ),
+            };
+            diags.push(d.with_help("a team fields at most 11 players (Law 3)"));
+        }
+        let keepers: Vec<usize> = team.iter().enumerate().filter(|(_, p)| p.role == Role::GK).map(|(k, _)| k).collect();
+        match keepers.as_slice() {
+            [_] => {}
+            [] => diags.push(
+                at_team(Code::Goalkeepers, format!("the {side} team has no goalkeeper"), "no GK")
+                    .with_help("every team needs exactly one player with role GK"),
+            ),
+            [first, second, ..] => {
+                let mut d = match o.players[i].get(*second) {
+                    Some(l) => Diagnostic::new(
+                        Code::Goalkeepers,
+                        format!("the {side} team has {} goalkeepers", keepers.len()),
+                        &l.source,
+                        l.span,
+                        "another GK",
+                    ),
+                    None => at_team(
+                        Code::Goalkeepers,
+                        format!("the {side} team has {} goalkeepers", keepers.len()),
+                        "too many GKs",
+                    ),
+                };
+                if let Some(l) = o.players[i].get(*first).filter(|l| std::sync::Arc::ptr_eq(&l.source, &d.source)) {
+                    d = d.with_label(l.span, "first GK");
+                }
+                diags.push(d.with_help("a team has exactly one goalkeeper; give the others an outfield role"));
+            }
+        }
+        for (k, p) in team.iter().enumerate() {
+            let bounds = p.random.as_ref().map_or([[p.x, p.x], [p.y, p.y]], Spot::bounds);
+            let loc = o.players[i].get(k).cloned().unwrap_or(Loc { source: source.clone(), span: name_span });
+            position(bounds, &format!("{side} player {k} ({})", p.role), &loc, diags);
+        }
+    }
+    let ball_loc = o.ball.clone().unwrap_or(Loc { source: source.clone(), span: name_span });
+    let ball = s.ball_random.as_ref().map_or([[s.ball_position[0]; 2], [s.ball_position[1]; 2]], Spot::bounds);
+    position(ball, "the ball", &ball_loc, diags);
+    if diags.has_errors() {
+        return;
+    }
+    if let Err(e) = s.validate() {
+        diags.push(at_name(Code::OutOfRange, e.to_string(), "this scenario"));
+        return;
+    }
+    if !s.requires.is_empty() {
+        let acceptance = s.require_acceptance(ACCEPTANCE_SAMPLES);
+        let failure = (1.0 - f64::from(acceptance)).powi(MAX_PLACEMENT_TRIES as i32);
+        if acceptance == 0.0 {
+            diags.push(
+                at_name(
+                    Code::Unsatisfiable,
+                    format!("the `require` constraints never held in {ACCEPTANCE_SAMPLES} draws"),
+                    "cannot be placed",
+                )
+                .with_help("widen the distributions or relax the distances; a fixed placement that breaks a constraint can never hold"),
+            );
+        } else if failure > MAX_FAILURE {
+            diags.push(
+                at_name(
+                    Code::Unsatisfiable,
+                    format!(
+                        "the `require` constraints hold in only {:.2}% of draws: a reset may run out of its {MAX_PLACEMENT_TRIES} tries",
+                        100.0 * acceptance
+                    ),
+                    "too rarely placeable",
+                )
+                .with_help("relax the constraints so that at least ~2% of draws meet them"),
+            );
+        }
+    }
+    if !s.left_team.iter().any(|p| p.controllable) {
+        diags.push(
+            at_name(Code::NoControllable, "no left player is controllable".into(), "agents cannot play this side")
+                .with_help("remove `not controllable` from a left player, unless only the built-in AI plays"),
+        );
+    }
+}
+
+/// Errors for a position box outside the rim, a warning outside the lines.
+fn position(bounds: [[f32; 2]; 2], what: &str, loc: &Loc, diags: &mut Diagnostics) {
+    let [[x0, x1], [y0, y1]] = bounds;
+    let beyond = |limit: [f32; 2]| {
+        ![x0, x1, y0, y1].iter().all(|v| v.is_finite())
+            || x0.abs().max(x1.abs()) > limit[0]
+            || y0.abs().max(y1.abs()) > limit[1]
+    };
+    let place = if x0 == x1 && y0 == y1 { format!("({x0}, {y0})") } else { format!("({x0}..{x1}, {y0}..{y1})") };
+    if beyond(RIM) {
+        diags.push(
+            Diagnostic::new(Code::OutOfRange, format!("{what} starts off the pitch at {place}"), &loc.source, loc.span, "off the pitch")
+                .with_help("positions are in scenario units: x in [-1, 1] (goal lines), y in [-0.42, 0.42] (touchlines); the rim allows |x| <= 1.1, |y| <= 0.48"),
+        );
+    } else if beyond(LINES) {
+        diags.push(Diagnostic::new(
+            Code::OutsideLines,
+            format!("{what} starts outside the lines at {place}"),
+            &loc.source,
+            loc.span,
+            "outside the lines",
+        ));
+    }
+}

@@ -1,0 +1,398 @@
+//! `.tl` source → checked [`Scenario`]: parse every file involved (the source, its imports, the
+//! prelude, stdlib scenarios it extends), resolve `extends` chains (with cycle detection), apply
+//! each definition's statements on its parent, then check the result. Every problem found is
+//! reported, not just the first.
+
+mod body;
+mod check;
+mod pitch;
+mod value;
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use miette::NamedSource;
+use touchline_engine::Scenario;
+
+use crate::diagnostic::{Code, Diagnostic, Diagnostics, Source};
+use crate::syntax::{self, Definition, Item, Kind, StatementKind};
+use crate::{stdlib, suggest};
+use body::Origins;
+use value::{Reader, suggest_help};
+
+/// The built-in presets every file may extend (`academy`).
+pub const PRELUDE: &str = include_str!("../../../stdlib-scenarios/prelude.tl");
+
+/// A compiled scenario with the warnings found and the files it was built from.
+#[derive(Clone, Debug)]
+pub struct Compiled {
+    /// The checked scenario.
+    pub scenario: Scenario,
+    /// Warnings (`tl::W1xx`); errors make [`compile`] fail instead.
+    pub warnings: Diagnostics,
+    /// Every file read: the source itself (when it came from a path) and its imports, in the
+    /// order read. A watcher recompiles when any of them changes.
+    pub files: Vec<PathBuf>,
+}
+
+/// Compiles `.tl` text. `origin` names it in diagnostics; imports are resolved relative to
+/// `origin`'s directory when it is a path.
+///
+/// # Errors
+/// Every error found (`tl::E1xx`), with the warnings, as [`Diagnostics`].
+pub fn compile(source: &str, origin: &str) -> Result<Compiled, Diagnostics> {
+    let dir = Path::new(origin).parent().map(Path::to_path_buf);
+    Compiler::default().run(source.to_owned(), origin, dir, None)
+}
+
+/// Reads and compiles the `.tl` file at `path`.
+///
+/// # Errors
+/// `tl::E112` when the file cannot be read; otherwise as [`compile`].
+pub fn compile_file(path: &Path) -> Result<Compiled, Diagnostics> {
+    let origin = path.display().to_string();
+    match std::fs::read_to_string(path) {
+        Ok(text) => {
+            let dir = path.parent().map(Path::to_path_buf);
+            Compiler::default().run(text, &origin, dir, Some(path.to_path_buf()))
+        }
+        Err(e) => {
+            let source: Source = Arc::new(NamedSource::new(origin.clone(), String::new()));
+            let mut diags = Diagnostics::default();
+            diags.push(Diagnostic::bare(Code::MissingImport, format!("cannot read `{origin}`: {e}"), &source));
+            Err(diags)
+        }
+    }
+}
+
+/// One parsed file.
+struct Unit {
+    source: Source,
+    file: syntax::File,
+    /// Units this one imports, with the import's span.
+    imports: Vec<(usize, syntax::Span)>,
+    /// Whether the file is a stdlib scenario or the prelude (no imports allowed).
+    embedded: bool,
+}
+
+#[derive(Default)]
+struct Compiler {
+    units: Vec<Unit>,
+    by_path: HashMap<PathBuf, usize>,
+    diags: Diagnostics,
+    cache: HashMap<(usize, usize), Option<(Scenario, Origins)>>,
+    stack: Vec<(usize, usize)>,
+    used_imports: Vec<(usize, usize)>,
+    files: Vec<PathBuf>,
+    prelude: Option<usize>,
+}
+
+impl Compiler {
+    fn run(
+        mut self,
+        text: String,
+        origin: &str,
+        dir: Option<PathBuf>,
+        path: Option<PathBuf>,
+    ) -> Result<Compiled, Diagnostics> {
+        if let Some(p) = &path {
+            self.files.push(p.clone());
+        }
+        let Some(main) = self.load(text, origin, dir, false) else { return Err(self.diags) };
+        let prelude = self.load(PRELUDE.to_owned(), "prelude.tl", None, true);
+        self.prelude = prelude;
+        let scenarios: Vec<usize> =
+            self.definitions(main).filter(|(_, d)| d.kind == Kind::Scenario).map(|(i, _)| i).collect();
+        let source = self.units[main].source.clone();
+        let def = match scenarios.as_slice() {
+            [one] => *one,
+            [] => {
+                self.diags.push(
+                    Diagnostic::bare(Code::ScenarioCount, "this file defines no scenario", &source)
+                        .with_help("add `scenario NAME { … }`; presets alone cannot be played"),
+                );
+                return Err(self.diags);
+            }
+            [_, rest @ ..] => {
+                for &i in rest {
+                    let span = self.definition(main, i).name.span;
+                    self.diags.push(
+                        Diagnostic::new(
+                            Code::ScenarioCount,
+                            "a file defines one scenario",
+                            &source,
+                            span,
+                            "another scenario",
+                        )
+                        .with_help("move it to its own file, or make it a `preset`"),
+                    );
+                }
+                return Err(self.diags);
+            }
+        };
+        let resolved = self.resolve(main, def);
+        self.report_unused_imports();
+        let Some((scenario, origins)) = resolved else { return Err(self.diags) };
+        let name_span = self.definition(main, def).name.span;
+        check::check(&scenario, &origins, &source, name_span, &mut self.diags);
+        if self.diags.has_errors() {
+            return Err(self.diags);
+        }
+        Ok(Compiled { scenario, warnings: self.diags, files: self.files })
+    }
+
+    /// Parses a file and, recursively, its imports.
+    fn load(&mut self, text: String, origin: &str, dir: Option<PathBuf>, embedded: bool) -> Option<usize> {
+        let source: Source = Arc::new(NamedSource::new(origin, text));
+        let file = match syntax::parse(&source) {
+            Ok(f) => f,
+            Err(d) => {
+                self.diags.push(*d);
+                return None;
+            }
+        };
+        let index = self.units.len();
+        let imports: Vec<syntax::Spanned<String>> =
+            file.items.iter().filter_map(|i| if let Item::Import(p) = i { Some(p.clone()) } else { None }).collect();
+        self.units.push(Unit { source: source.clone(), file, imports: Vec::new(), embedded });
+        self.check_duplicate_names(index);
+        for import in imports {
+            let Some(dir) = dir.as_ref().filter(|_| !embedded) else {
+                self.diags.push(
+                    Diagnostic::new(
+                        Code::MissingImport,
+                        "imports need a scenario file on disk",
+                        &source,
+                        import.span,
+                        "here",
+                    )
+                    .with_help(
+                        "compile the scenario from a file (touchline check FILE.tl) so imports have a directory",
+                    ),
+                );
+                continue;
+            };
+            let path = dir.join(&import.value);
+            let key = path.canonicalize().unwrap_or_else(|_| path.clone());
+            if let Some(&u) = self.by_path.get(&key) {
+                self.units[index].imports.push((u, import.span));
+                continue;
+            }
+            match std::fs::read_to_string(&path) {
+                Ok(text) => {
+                    self.files.push(path.clone());
+                    // Mark before loading so that import cycles end here.
+                    self.by_path.insert(key.clone(), usize::MAX);
+                    let loaded =
+                        self.load(text, &path.display().to_string(), path.parent().map(Path::to_path_buf), false);
+                    match loaded {
+                        Some(u) => {
+                            self.by_path.insert(key, u);
+                            self.units[index].imports.push((u, import.span));
+                        }
+                        None => {
+                            self.by_path.remove(&key);
+                        }
+                    }
+                }
+                Err(e) => self.diags.push(
+                    Diagnostic::new(
+                        Code::MissingImport,
+                        format!("cannot import `{}`: {e}", import.value),
+                        &source,
+                        import.span,
+                        "not found",
+                    )
+                    .with_help(format!("the path is relative to this file: {}", path.display())),
+                ),
+            }
+        }
+        Some(index)
+    }
+
+    fn definitions(&self, unit: usize) -> impl Iterator<Item = (usize, &Definition)> {
+        self.units[unit]
+            .file
+            .items
+            .iter()
+            .filter_map(|i| if let Item::Definition(d) = i { Some(d) } else { None })
+            .enumerate()
+    }
+
+    fn definition(&self, unit: usize, index: usize) -> &Definition {
+        self.definitions(unit).nth(index).map(|(_, d)| d).expect("definition indices come from `definitions`")
+    }
+
+    fn check_duplicate_names(&mut self, unit: usize) {
+        let mut seen: HashMap<&str, syntax::Span> = HashMap::new();
+        let mut found = Vec::new();
+        for (_, d) in self.definitions(unit) {
+            if let Some(first) = seen.insert(&d.name.value, d.name.span) {
+                found.push((d.name.value.clone(), d.name.span, first));
+            }
+        }
+        let source = self.units[unit].source.clone();
+        for (name, span, first) in found {
+            self.diags.push(
+                Diagnostic::new(
+                    Code::DuplicateDefinition,
+                    format!("`{name}` is defined twice"),
+                    &source,
+                    span,
+                    "again here",
+                )
+                .with_label(first, "first defined here"),
+            );
+        }
+    }
+
+    /// Finds the definition `name` as seen from `unit`: its own, its imports', the prelude's,
+    /// then the stdlib's scenarios.
+    fn lookup(&mut self, unit: usize, name: &str) -> Option<(usize, usize)> {
+        let find = |c: &Compiler, u: usize| c.definitions(u).find(|(_, d)| d.name.value == name).map(|(i, _)| (u, i));
+        if let Some(found) = find(self, unit) {
+            return Some(found);
+        }
+        let imports: Vec<usize> = self.units[unit].imports.iter().map(|(u, _)| *u).collect();
+        for (k, u) in imports.into_iter().enumerate() {
+            if let Some(found) = find(self, u) {
+                self.used_imports.push((unit, k));
+                return Some(found);
+            }
+        }
+        if let Some(found) = self.prelude.and_then(|p| find(self, p)) {
+            return Some(found);
+        }
+        let text = stdlib::tl_source(name)?;
+        let key = PathBuf::from(format!("stdlib/{name}.tl"));
+        let u = match self.by_path.get(&key) {
+            Some(&u) => u,
+            None => {
+                let u = self.load(text.to_owned(), &key.display().to_string(), None, true)?;
+                self.by_path.insert(key, u);
+                u
+            }
+        };
+        find(self, u)
+    }
+
+    /// Every name `unit` can extend, for suggestions.
+    fn visible_names(&self, unit: usize) -> Vec<String> {
+        let mut units = vec![unit];
+        units.extend(self.units[unit].imports.iter().map(|(u, _)| *u));
+        units.extend(self.prelude);
+        let mut names: Vec<String> =
+            units.iter().flat_map(|&u| self.definitions(u).map(|(_, d)| d.name.value.clone())).collect();
+        names.extend(stdlib::names().iter().map(|n| (*n).to_owned()));
+        names
+    }
+
+    /// The scenario definition `(unit, def)` describes, with its parents applied first.
+    fn resolve(&mut self, unit: usize, def: usize) -> Option<(Scenario, Origins)> {
+        if let Some(done) = self.cache.get(&(unit, def)) {
+            return done.clone();
+        }
+        let d = self.definition(unit, def).clone();
+        let source = self.units[unit].source.clone();
+        let parent = d.statements.iter().find_map(|s| match &s.kind {
+            StatementKind::Extends(name) => Some(name.clone()),
+            _ => None,
+        });
+        self.stack.push((unit, def));
+        let base = match parent {
+            None => Some((Scenario::default(), Origins::default())),
+            Some(name) => match self.lookup(unit, &name.value) {
+                Some(target) if self.stack.contains(&target) => {
+                    let chain: Vec<String> = self
+                        .stack
+                        .iter()
+                        .skip_while(|t| **t != target)
+                        .map(|&(u, i)| self.definition(u, i).name.value.clone())
+                        .chain(std::iter::once(name.value.clone()))
+                        .collect();
+                    self.diags.push(
+                        Diagnostic::new(
+                            Code::ExtendsCycle,
+                            format!("`extends` goes round in a circle: {}", chain.join(" → ")),
+                            &source,
+                            name.span,
+                            "closes the cycle",
+                        )
+                        .with_help("a definition cannot extend itself, directly or through others"),
+                    );
+                    None
+                }
+                Some((u, i)) => self.resolve(u, i),
+                None => {
+                    let names = self.visible_names(unit);
+                    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+                    let close = suggest::closest(&name.value, &refs);
+                    self.diags.push(
+                        Diagnostic::new(
+                            Code::UnknownParent,
+                            format!("nothing called `{}` to extend", name.value),
+                            &source,
+                            name.span,
+                            "unknown preset or scenario",
+                        )
+                        .with_help(suggest_help(
+                            &close,
+                            "extend a preset of this file or an import, `academy`, or a stdlib scenario",
+                        )),
+                    );
+                    None
+                }
+            },
+        };
+        // Without a parent the body is still read, so that its own mistakes are reported too.
+        let parent_ok = base.is_some();
+        let (mut scenario, mut origins) = base.unwrap_or_default();
+        let mut reader = Reader { source: &source, diags: &mut self.diags };
+        body::apply(&d, &mut scenario, &mut origins, &mut reader);
+        scenario.name = d.name.value.clone();
+        scenario.description = description(&d.docs);
+        let result = parent_ok.then_some((scenario, origins));
+        self.stack.pop();
+        self.cache.insert((unit, def), result.clone());
+        result
+    }
+
+    fn report_unused_imports(&mut self) {
+        for (u, unit) in self.units.iter().enumerate() {
+            if unit.embedded {
+                continue;
+            }
+            for (k, (_, span)) in unit.imports.iter().enumerate() {
+                if !self.used_imports.contains(&(u, k)) {
+                    self.diags.push(
+                        Diagnostic::new(
+                            Code::UnusedImport,
+                            "nothing from this import is used",
+                            &unit.source,
+                            *span,
+                            "unused",
+                        )
+                        .with_help("remove the import, or `extends` one of its definitions"),
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Doc lines joined: consecutive lines with a space, an empty line starts a new paragraph.
+fn description(docs: &[String]) -> String {
+    let mut out = String::new();
+    for line in docs {
+        if line.is_empty() {
+            out.push_str("\n\n");
+        } else {
+            if !out.is_empty() && !out.ends_with('\n') {
+                out.push(' ');
+            }
+            out.push_str(line);
+        }
+    }
+    out.trim().to_owned()
+}

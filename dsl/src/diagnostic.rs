@@ -1,0 +1,308 @@
+//! The compiler's diagnostics: a stable [`Code`] per kind of problem, a label on the exact span,
+//! help text, and [`Diagnostics`], every problem of one compile at once.
+
+use std::fmt;
+use std::sync::Arc;
+
+use miette::{LabeledSpan, NamedSource, Severity};
+
+use crate::syntax::Span;
+
+/// The stable code of a compiler diagnostic (`tl::E1xx` errors, `tl::W1xx` warnings). Codes are
+/// never reused for another problem; grammar/README.md lists them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Code {
+    /// The text does not follow the grammar.
+    Syntax,
+    /// A configuration key the language does not know.
+    UnknownKey,
+    /// A role name that is not one of GK CB LB RB DM CM LM RM AM CF.
+    UnknownRole,
+    /// A region name that is not known.
+    UnknownRegion,
+    /// A formation name that is not known.
+    UnknownFormation,
+    /// A value of the wrong type (a string where a number belongs, …).
+    WrongType,
+    /// A number with a unit that does not fit (`400 m` for a duration, …).
+    WrongUnit,
+    /// A value outside its range (off the pitch, a difficulty above 1, …).
+    OutOfRange,
+    /// More than 11 players in a team, or none.
+    PlayerCount,
+    /// A team without a goalkeeper, or with two.
+    Goalkeepers,
+    /// A statement given twice in one definition.
+    Duplicate,
+    /// `extends` goes round in a circle.
+    ExtendsCycle,
+    /// An imported file cannot be read.
+    MissingImport,
+    /// A `require` constraint that can never hold, or too rarely for the retry budget.
+    Unsatisfiable,
+    /// `extends` names no known preset or scenario.
+    UnknownParent,
+    /// A player reference that names no player.
+    UnknownPlayer,
+    /// A function (distribution, region, reward) that is not known.
+    UnknownFunction,
+    /// A call with the wrong number or names of arguments.
+    Arguments,
+    /// A file without a scenario, or with several.
+    ScenarioCount,
+    /// An end condition that is not known.
+    UnknownCondition,
+    /// Two definitions with the same name.
+    DuplicateDefinition,
+    /// `start from` names a file that is not a usable saved state.
+    StartState,
+    /// Warning: a player or ball outside the lines (but inside the rim, so still playable).
+    OutsideLines,
+    /// Warning: the left team has no controllable player, so an agent has no one to drive.
+    NoControllable,
+    /// Warning: an import nothing uses.
+    UnusedImport,
+}
+
+impl Code {
+    /// Every code, in numbering order.
+    pub const ALL: [Code; 25] = [
+        Code::Syntax,
+        Code::UnknownKey,
+        Code::UnknownRole,
+        Code::UnknownRegion,
+        Code::UnknownFormation,
+        Code::WrongType,
+        Code::WrongUnit,
+        Code::OutOfRange,
+        Code::PlayerCount,
+        Code::Goalkeepers,
+        Code::Duplicate,
+        Code::ExtendsCycle,
+        Code::MissingImport,
+        Code::Unsatisfiable,
+        Code::UnknownParent,
+        Code::UnknownPlayer,
+        Code::UnknownFunction,
+        Code::Arguments,
+        Code::ScenarioCount,
+        Code::UnknownCondition,
+        Code::DuplicateDefinition,
+        Code::StartState,
+        Code::OutsideLines,
+        Code::NoControllable,
+        Code::UnusedImport,
+    ];
+
+    /// The code as shown: `tl::E100` … `tl::W102`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Code::Syntax => "tl::E100",
+            Code::UnknownKey => "tl::E101",
+            Code::UnknownRole => "tl::E102",
+            Code::UnknownRegion => "tl::E103",
+            Code::UnknownFormation => "tl::E104",
+            Code::WrongType => "tl::E105",
+            Code::WrongUnit => "tl::E106",
+            Code::OutOfRange => "tl::E107",
+            Code::PlayerCount => "tl::E108",
+            Code::Goalkeepers => "tl::E109",
+            Code::Duplicate => "tl::E110",
+            Code::ExtendsCycle => "tl::E111",
+            Code::MissingImport => "tl::E112",
+            Code::Unsatisfiable => "tl::E113",
+            Code::UnknownParent => "tl::E114",
+            Code::UnknownPlayer => "tl::E115",
+            Code::UnknownFunction => "tl::E116",
+            Code::Arguments => "tl::E117",
+            Code::ScenarioCount => "tl::E118",
+            Code::UnknownCondition => "tl::E119",
+            Code::DuplicateDefinition => "tl::E120",
+            Code::StartState => "tl::E121",
+            Code::OutsideLines => "tl::W100",
+            Code::NoControllable => "tl::W101",
+            Code::UnusedImport => "tl::W102",
+        }
+    }
+
+    /// Whether diagnostics with this code are warnings.
+    pub fn is_warning(self) -> bool {
+        self.as_str().starts_with("tl::W")
+    }
+}
+
+impl fmt::Display for Code {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// A source text with its name, shared by every diagnostic about it.
+pub type Source = Arc<NamedSource<String>>;
+
+/// One problem found in a source: code, message, labelled spans and help.
+#[derive(Clone, Debug)]
+pub struct Diagnostic {
+    /// The stable code.
+    pub code: Code,
+    /// One-line message.
+    pub message: String,
+    /// The text the spans point into.
+    pub source: Source,
+    /// Labelled spans; the first is the primary one.
+    pub labels: Vec<(Span, String)>,
+    /// What to do about it ("did you mean `CB`?").
+    pub help: Option<String>,
+}
+
+impl Diagnostic {
+    /// A diagnostic with one labelled span.
+    pub fn new(code: Code, message: impl Into<String>, source: &Source, span: Span, label: impl Into<String>) -> Self {
+        Diagnostic {
+            code,
+            message: message.into(),
+            source: source.clone(),
+            labels: vec![(span, label.into())],
+            help: None,
+        }
+    }
+
+    /// A diagnostic about a whole source, without a span (an unreadable file, an empty one).
+    pub fn bare(code: Code, message: impl Into<String>, source: &Source) -> Self {
+        Diagnostic { code, message: message.into(), source: source.clone(), labels: Vec::new(), help: None }
+    }
+
+    /// Adds help text.
+    pub fn with_help(mut self, help: impl Into<String>) -> Self {
+        self.help = Some(help.into());
+        self
+    }
+
+    /// Adds a secondary label.
+    pub fn with_label(mut self, span: Span, label: impl Into<String>) -> Self {
+        self.labels.push((span, label.into()));
+        self
+    }
+
+    /// The primary span.
+    pub fn span(&self) -> Span {
+        self.labels.first().map_or(Span::default(), |(s, _)| *s)
+    }
+
+    /// Name of the source (a path or `stdlib/NAME.tl`).
+    pub fn origin(&self) -> &str {
+        self.source.name()
+    }
+}
+
+impl fmt::Display for Diagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for Diagnostic {}
+
+impl miette::Diagnostic for Diagnostic {
+    fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        Some(Box::new(self.code))
+    }
+
+    fn severity(&self) -> Option<Severity> {
+        Some(if self.code.is_warning() { Severity::Warning } else { Severity::Error })
+    }
+
+    fn help<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        self.help.as_ref().map(|h| Box::new(h) as Box<dyn fmt::Display>)
+    }
+
+    fn source_code(&self) -> Option<&dyn miette::SourceCode> {
+        (!self.labels.is_empty()).then_some(&*self.source as &dyn miette::SourceCode)
+    }
+
+    fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
+        Some(Box::new(self.labels.iter().enumerate().map(|(i, (span, label))| {
+            let len = span.end.saturating_sub(span.start);
+            let label = (!label.is_empty()).then(|| label.clone());
+            if i == 0 {
+                LabeledSpan::new_primary_with_span(label, (span.start, len))
+            } else {
+                LabeledSpan::new_with_span(label, (span.start, len))
+            }
+        })))
+    }
+}
+
+/// Every diagnostic of one compile: errors and warnings, in source order.
+#[derive(Clone, Debug, Default)]
+pub struct Diagnostics {
+    /// All diagnostics, errors and warnings mixed, in the order found.
+    pub items: Vec<Diagnostic>,
+}
+
+impl Diagnostics {
+    /// Adds one.
+    pub fn push(&mut self, d: Diagnostic) {
+        self.items.push(d);
+    }
+
+    /// Whether any is an error.
+    pub fn has_errors(&self) -> bool {
+        self.items.iter().any(|d| !d.code.is_warning())
+    }
+
+    /// The errors.
+    pub fn errors(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.items.iter().filter(|d| !d.code.is_warning())
+    }
+
+    /// The warnings.
+    pub fn warnings(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.items.iter().filter(|d| d.code.is_warning())
+    }
+
+    /// All diagnostics rendered as plain text (no colour, 80 columns), one after another: what
+    /// Python exceptions and snapshot tests show.
+    pub fn render_plain(&self) -> String {
+        self.items.iter().map(|d| crate::render_plain(d)).collect::<Vec<_>>().join("\n")
+    }
+}
+
+impl fmt::Display for Diagnostics {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let errors = self.errors().count();
+        match self.errors().next() {
+            Some(first) if errors == 1 => write!(f, "{}: {}", first.code, first.message),
+            Some(first) => write!(f, "{}: {} (and {} more errors)", first.code, first.message, errors - 1),
+            None => write!(f, "{} warnings", self.items.len()),
+        }
+    }
+}
+
+impl std::error::Error for Diagnostics {}
+
+impl miette::Diagnostic for Diagnostics {
+    fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        self.errors().next().map(|d| Box::new(d.code) as Box<dyn fmt::Display>)
+    }
+
+    fn related<'a>(&'a self) -> Option<Box<dyn Iterator<Item = &'a dyn miette::Diagnostic> + 'a>> {
+        Some(Box::new(self.items.iter().map(|d| d as &dyn miette::Diagnostic)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_are_unique_and_ordered() {
+        let codes: Vec<&str> = Code::ALL.iter().map(|c| c.as_str()).collect();
+        let mut sorted = codes.clone();
+        sorted.sort_unstable();
+        sorted.dedup();
+        assert_eq!(sorted.len(), codes.len());
+        assert!(Code::OutsideLines.is_warning() && !Code::Syntax.is_warning());
+    }
+}

@@ -1,0 +1,270 @@
+//! The syntax tree of a `.tl` file: what the text says, with a byte span on every part, before
+//! any name or value is checked.
+
+/// A byte range `start..end` in the source text.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Span {
+    /// First byte.
+    pub start: usize,
+    /// One past the last byte.
+    pub end: usize,
+}
+
+impl Span {
+    /// The span from `a`'s start to `b`'s end.
+    pub fn join(a: Span, b: Span) -> Span {
+        Span { start: a.start.min(b.start), end: a.end.max(b.end) }
+    }
+}
+
+/// A value with the span of its text.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spanned<T> {
+    /// The value.
+    pub value: T,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// A parsed file.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct File {
+    /// Imports and definitions in source order.
+    pub items: Vec<Item>,
+    /// Every `//` comment, in source order (for the formatter).
+    pub comments: Vec<Spanned<String>>,
+}
+
+/// A top-level item.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Item {
+    /// `import "path"`.
+    Import(Spanned<String>),
+    /// `scenario NAME { … }` or `preset NAME { … }`.
+    Definition(Definition),
+}
+
+/// Whether a definition is a scenario or a preset.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A playable scenario; a file compiles to its one scenario.
+    Scenario,
+    /// A named set of statements others extend.
+    Preset,
+}
+
+/// `/// docs` + `scenario|preset NAME { statements }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Definition {
+    /// Doc comment lines, without the `///` and one leading space.
+    pub docs: Vec<String>,
+    /// Scenario or preset.
+    pub kind: Kind,
+    /// The name.
+    pub name: Spanned<String>,
+    /// Statements in source order.
+    pub statements: Vec<Statement>,
+    /// The whole definition, docs included.
+    pub span: Span,
+}
+
+/// One statement of a definition body.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Statement {
+    /// What it says.
+    pub kind: StatementKind,
+    /// The whole statement.
+    pub span: Span,
+}
+
+/// The statements of the language.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StatementKind {
+    /// `extends NAME`.
+    Extends(Spanned<String>),
+    /// `ball at …` / `ball in …`.
+    Ball(Place),
+    /// `on odd episodes ball at …`.
+    OddBall(Place),
+    /// `on odd episodes swap teams`.
+    SwapTeams,
+    /// `team left|right [formation "…"] [{ players }]`.
+    Team(Team),
+    /// `require LHS >= RHS` / `<=`.
+    Require {
+        /// Left-hand side (`distance(a, b)`).
+        lhs: Expr,
+        /// `>=` (true) or `<=` (false).
+        at_least: bool,
+        /// Right-hand side (a distance).
+        rhs: Expr,
+    },
+    /// `reward TERM + … [weight W]`.
+    Reward {
+        /// Terms.
+        terms: Vec<RewardTerm>,
+        /// `weight W`.
+        weight: Option<Expr>,
+    },
+    /// `end when COND or …`.
+    End(Vec<Condition>),
+    /// `start from "file"`.
+    StartFrom(Spanned<String>),
+    /// `KEY VALUE`.
+    Setting {
+        /// The key.
+        key: Spanned<String>,
+        /// The value.
+        value: Expr,
+    },
+}
+
+/// Left or right.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    /// The left team.
+    Left,
+    /// The right team.
+    Right,
+}
+
+/// A `team` statement.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Team {
+    /// Which team.
+    pub side: Spanned<Side>,
+    /// `formation "4-4-2"`.
+    pub formation: Option<Spanned<String>>,
+    /// Players of the block.
+    pub players: Vec<Player>,
+    /// Whether a `{ }` block was written.
+    pub block: bool,
+}
+
+/// `ROLE at|in … flags`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Player {
+    /// The role name as written.
+    pub role: Spanned<String>,
+    /// Where the player starts.
+    pub place: Place,
+    /// Flags as written.
+    pub flags: Vec<Spanned<Flag>>,
+    /// The whole player line.
+    pub span: Span,
+}
+
+/// A player flag.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Flag {
+    /// `lazy`.
+    Lazy,
+    /// `controllable` (the default, written out).
+    Controllable,
+    /// `not controllable`.
+    NotControllable,
+}
+
+/// `at EXPR` or `in EXPR`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Place {
+    /// A point, a point of distributions, or `choice[points]`.
+    At(Expr),
+    /// A region.
+    In(Expr),
+}
+
+/// One reward term.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RewardTerm {
+    /// `script "file.rhai"`.
+    Script(Spanned<String>),
+    /// `scoring`, `checkpoint(…)`.
+    Expr(Expr),
+}
+
+/// One `end when` condition.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Condition {
+    /// `steps >= N`.
+    Steps(Expr),
+    /// `ball in REGION`.
+    BallIn(Expr),
+    /// `script "file.rhai"`.
+    Script(Spanned<String>),
+    /// `score`, `out_of_play`, `possession_change`.
+    Name(Spanned<String>),
+}
+
+/// An expression with its span.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    /// What it is.
+    pub kind: ExprKind,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// The expressions of the language.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprKind {
+    /// `name(args)`.
+    Call {
+        /// Function name.
+        name: Spanned<String>,
+        /// Arguments.
+        args: Vec<Argument>,
+    },
+    /// `name[args]`.
+    Index {
+        /// Name before the brackets.
+        name: Spanned<String>,
+        /// Arguments.
+        args: Vec<Argument>,
+    },
+    /// `(a, b)`.
+    Tuple(Vec<Argument>),
+    /// A number with an optional unit.
+    Quantity {
+        /// The number as written (kept for the formatter).
+        text: String,
+        /// Its value.
+        value: f64,
+        /// The unit, if any.
+        unit: Option<Spanned<String>>,
+    },
+    /// `"text"`.
+    Str(String),
+    /// `name` or `name.field`.
+    Path {
+        /// First name.
+        head: Spanned<String>,
+        /// `.field`.
+        field: Option<Spanned<String>>,
+    },
+}
+
+/// A positional or named argument.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Argument {
+    /// `name:` of a named argument.
+    pub name: Option<Spanned<String>>,
+    /// The value.
+    pub value: Expr,
+}
+
+impl Expr {
+    /// A short description of what the expression is, for "expected X, found Y" messages.
+    pub fn describe(&self) -> String {
+        match &self.kind {
+            ExprKind::Call { name, .. } => format!("a call to `{}`", name.value),
+            ExprKind::Index { name, .. } => format!("`{}[…]`", name.value),
+            ExprKind::Tuple(args) => format!("a tuple of {}", args.len()),
+            ExprKind::Quantity { unit: Some(u), .. } => format!("a number in `{}`", u.value),
+            ExprKind::Quantity { .. } => "a number".into(),
+            ExprKind::Str(_) => "a string".into(),
+            ExprKind::Path { head, field: None } => format!("the name `{}`", head.value),
+            ExprKind::Path { head, field: Some(f) } => format!("the name `{}.{}`", head.value, f.value),
+        }
+    }
+}

@@ -1,0 +1,371 @@
+//! Text to syntax tree: the pest parser derived from `grammar/scenario.pest` and the conversion of
+//! its parse tree into [`ast`] types with spans.
+
+pub mod ast;
+
+use pest::Parser;
+use pest::iterators::Pair;
+
+pub use ast::*;
+
+use crate::diagnostic::{Code, Diagnostic, Source};
+
+/// The parser pest derives from the grammar file (its `Rule` enum is generated, hence undocumented).
+#[allow(missing_docs, unreachable_pub)]
+mod generated {
+    #[derive(pest_derive::Parser)]
+    #[grammar = "../../grammar/scenario.pest"]
+    pub struct ScenarioParser;
+}
+
+use generated::{Rule, ScenarioParser};
+
+/// Parses a whole `.tl` text.
+///
+/// # Errors
+/// A `tl::E100` diagnostic at the first place the text leaves the grammar.
+pub fn parse(source: &Source) -> Result<File, Box<Diagnostic>> {
+    let text = source.inner().as_str();
+    let mut pairs = ScenarioParser::parse(Rule::file, text).map_err(|e| Box::new(syntax_error(e, source)))?;
+    let mut file = File::default();
+    let root = pairs.next().expect("the file rule always yields one pair");
+    for pair in root.into_inner() {
+        match pair.as_rule() {
+            Rule::import => file.items.push(Item::Import(string(first(pair)))),
+            Rule::definition => file.items.push(Item::Definition(definition(pair, &mut file.comments))),
+            Rule::COMMENT => file.comments.push(spanned(&pair, pair.as_str().to_owned())),
+            _ => {}
+        }
+    }
+    // Comments inside definitions were gathered as they were met; keep them in source order.
+    file.comments.sort_by_key(|c| c.span.start);
+    Ok(file)
+}
+
+fn syntax_error(e: pest::error::Error<Rule>, source: &Source) -> Diagnostic {
+    let e = e.renamed_rules(rule_name);
+    let (start, end) = match e.location {
+        pest::error::InputLocation::Pos(p) => (p, p),
+        pest::error::InputLocation::Span((a, b)) => (a, b),
+    };
+    let text = source.inner().as_str();
+    // Point at the offending token (up to the next space) rather than at a zero-width gap.
+    let end = if end > start {
+        end
+    } else {
+        start + text[start..].find(|c: char| c.is_whitespace()).unwrap_or(text.len() - start).max(1)
+    };
+    let end = end.min(text.len());
+    let found = text.get(start..end).filter(|s| !s.is_empty()).unwrap_or("end of file");
+    let expected = match &e.variant {
+        pest::error::ErrorVariant::ParsingError { positives, .. } if !positives.is_empty() => {
+            let names: Vec<String> = positives.iter().map(rule_name).collect();
+            format!("expected {}", join_or(&names))
+        }
+        variant => variant.message().into_owned(),
+    };
+    Diagnostic::new(
+        Code::Syntax,
+        format!("syntax error: {expected}"),
+        source,
+        Span { start, end },
+        format!("found `{found}`"),
+    )
+    .with_help("see grammar/README.md for the statements a scenario may contain")
+}
+
+fn join_or(names: &[String]) -> String {
+    match names {
+        [] => String::new(),
+        [one] => one.clone(),
+        [rest @ .., last] => format!("{} or {last}", rest.join(", ")),
+    }
+}
+
+/// Readable names of grammar rules for "expected …" messages.
+fn rule_name(rule: &Rule) -> String {
+    match rule {
+        Rule::EOI => "end of file",
+        Rule::import | Rule::definition | Rule::doc | Rule::kind => "`scenario`, `preset` or `import`",
+        Rule::name => "a name",
+        Rule::extends => "`extends`",
+        Rule::ball => "`ball`",
+        Rule::on_odd => "`on odd episodes`",
+        Rule::team => "`team`",
+        Rule::require => "`require`",
+        Rule::reward => "`reward`",
+        Rule::end => "`end when`",
+        Rule::start_from => "`start from`",
+        Rule::setting => "a statement",
+        Rule::side => "`left` or `right`",
+        Rule::formation => "`formation`",
+        Rule::player => "a player (`ROLE at (x, y)`)",
+        Rule::flag | Rule::lazy | Rule::controllable | Rule::not_controllable => "a flag",
+        Rule::place | Rule::at_place | Rule::in_place => "`at` or `in`",
+        Rule::comparison => "`>=` or `<=`",
+        Rule::reward_term | Rule::script => "a reward term",
+        Rule::weight => "`weight`",
+        Rule::condition | Rule::steps_condition | Rule::ball_condition => "an end condition",
+        Rule::swap_teams => "`swap teams` or `ball`",
+        Rule::expr | Rule::call | Rule::index | Rule::tuple | Rule::path => "a value",
+        Rule::arguments | Rule::argument => "an argument",
+        Rule::quantity | Rule::number => "a number",
+        Rule::unit => "a unit",
+        Rule::string | Rule::string_text => "a string",
+        Rule::ident => "a name",
+        _ => "something else",
+    }
+    .to_owned()
+}
+
+fn span_of(pair: &Pair<'_, Rule>) -> Span {
+    let s = pair.as_span();
+    Span { start: s.start(), end: s.end() }
+}
+
+fn spanned<T>(pair: &Pair<'_, Rule>, value: T) -> Spanned<T> {
+    Spanned { value, span: span_of(pair) }
+}
+
+/// The inner pairs without comments.
+fn inner<'i>(pair: Pair<'i, Rule>) -> impl Iterator<Item = Pair<'i, Rule>> {
+    pair.into_inner().filter(|p| p.as_rule() != Rule::COMMENT)
+}
+
+fn first(pair: Pair<'_, Rule>) -> Pair<'_, Rule> {
+    inner(pair).next().expect("the grammar guarantees an inner pair")
+}
+
+fn string(pair: Pair<'_, Rule>) -> Spanned<String> {
+    let span = span_of(&pair);
+    let text = pair.into_inner().next().map_or("", |t| t.as_str()).to_owned();
+    Spanned { value: text, span }
+}
+
+/// Collects every comment below `pair` into `comments`.
+fn gather_comments(pair: &Pair<'_, Rule>, comments: &mut Vec<Spanned<String>>) {
+    for p in pair.clone().into_inner().flatten() {
+        if p.as_rule() == Rule::COMMENT {
+            comments.push(spanned(&p, p.as_str().to_owned()));
+        }
+    }
+}
+
+fn definition(pair: Pair<'_, Rule>, comments: &mut Vec<Spanned<String>>) -> Definition {
+    gather_comments(&pair, comments);
+    let span = span_of(&pair);
+    let mut docs = Vec::new();
+    let mut kind = Kind::Scenario;
+    let mut name = Spanned { value: String::new(), span };
+    let mut statements = Vec::new();
+    for p in inner(pair) {
+        match p.as_rule() {
+            Rule::doc => {
+                let text = p.into_inner().next().map_or("", |t| t.as_str());
+                docs.push(text.strip_prefix(' ').unwrap_or(text).trim_end().to_owned());
+            }
+            Rule::kind => kind = if p.as_str() == "preset" { Kind::Preset } else { Kind::Scenario },
+            Rule::name => name = spanned(&p, p.as_str().to_owned()),
+            _ => statements.push(statement(p)),
+        }
+    }
+    Definition { docs, kind, name, statements, span }
+}
+
+fn statement(pair: Pair<'_, Rule>) -> Statement {
+    let span = span_of(&pair);
+    let kind = match pair.as_rule() {
+        Rule::extends => {
+            let n = first(pair);
+            StatementKind::Extends(spanned(&n, n.as_str().to_owned()))
+        }
+        Rule::ball => StatementKind::Ball(place(first(pair))),
+        Rule::on_odd => {
+            let p = first(pair);
+            match p.as_rule() {
+                Rule::ball => StatementKind::OddBall(place(first(p))),
+                _ => StatementKind::SwapTeams,
+            }
+        }
+        Rule::team => StatementKind::Team(team(pair)),
+        Rule::require => {
+            let mut it = inner(pair);
+            let lhs = expr(it.next().expect("lhs"));
+            let at_least = it.next().is_some_and(|c| c.as_str() == ">=");
+            let rhs = expr(it.next().expect("rhs"));
+            StatementKind::Require { lhs, at_least, rhs }
+        }
+        Rule::reward => {
+            let mut terms = Vec::new();
+            let mut weight = None;
+            for p in inner(pair) {
+                match p.as_rule() {
+                    Rule::reward_term => {
+                        let t = first(p);
+                        terms.push(match t.as_rule() {
+                            Rule::script => RewardTerm::Script(string(first(t))),
+                            _ => RewardTerm::Expr(expr(t)),
+                        });
+                    }
+                    _ => weight = Some(expr(first(p))),
+                }
+            }
+            StatementKind::Reward { terms, weight }
+        }
+        Rule::end => StatementKind::End(inner(pair).map(condition).collect()),
+        Rule::start_from => StatementKind::StartFrom(string(first(pair))),
+        _ => {
+            let mut it = inner(pair);
+            let k = it.next().expect("key");
+            let key = spanned(&k, k.as_str().to_owned());
+            let value = expr(it.next().expect("value"));
+            StatementKind::Setting { key, value }
+        }
+    };
+    Statement { kind, span }
+}
+
+fn team(pair: Pair<'_, Rule>) -> Team {
+    let mut t = Team {
+        side: Spanned { value: Side::Left, span: Span::default() },
+        formation: None,
+        players: Vec::new(),
+        block: pair.as_str().contains('{'),
+    };
+    for p in inner(pair) {
+        match p.as_rule() {
+            Rule::side => t.side = spanned(&p, if p.as_str() == "left" { Side::Left } else { Side::Right }),
+            Rule::formation => t.formation = Some(string(first(p))),
+            _ => t.players.push(player(p)),
+        }
+    }
+    t
+}
+
+fn player(pair: Pair<'_, Rule>) -> Player {
+    let span = span_of(&pair);
+    let mut it = inner(pair);
+    let r = it.next().expect("role");
+    let role = spanned(&r, r.as_str().to_owned());
+    let place = place(it.next().expect("place"));
+    let flags = it
+        .map(|f| {
+            let flag = match first(f.clone()).as_rule() {
+                Rule::lazy => Flag::Lazy,
+                Rule::not_controllable => Flag::NotControllable,
+                _ => Flag::Controllable,
+            };
+            spanned(&f, flag)
+        })
+        .collect();
+    Player { role, place, flags, span }
+}
+
+fn place(pair: Pair<'_, Rule>) -> Place {
+    let p = first(pair);
+    let is_at = p.as_rule() == Rule::at_place;
+    let e = expr(first(p));
+    if is_at { Place::At(e) } else { Place::In(e) }
+}
+
+fn condition(pair: Pair<'_, Rule>) -> Condition {
+    let c = first(pair);
+    match c.as_rule() {
+        Rule::steps_condition => Condition::Steps(expr(first(c))),
+        Rule::ball_condition => Condition::BallIn(expr(first(c))),
+        Rule::script => Condition::Script(string(first(c))),
+        _ => Condition::Name(spanned(&c, c.as_str().to_owned())),
+    }
+}
+
+fn expr(pair: Pair<'_, Rule>) -> Expr {
+    let span = span_of(&pair);
+    let e = if pair.as_rule() == Rule::expr { first(pair) } else { pair };
+    let kind = match e.as_rule() {
+        Rule::call | Rule::index => {
+            let is_call = e.as_rule() == Rule::call;
+            let mut it = inner(e);
+            let n = it.next().expect("name");
+            let name = spanned(&n, n.as_str().to_owned());
+            let args = it.next().map(arguments).unwrap_or_default();
+            if is_call { ExprKind::Call { name, args } } else { ExprKind::Index { name, args } }
+        }
+        Rule::tuple => ExprKind::Tuple(arguments(first(e))),
+        Rule::quantity => {
+            let mut it = e.into_inner();
+            let n = it.next().expect("number");
+            let text = n.as_str().to_owned();
+            let value = text.parse::<f64>().unwrap_or(f64::NAN);
+            let unit = it.next().map(|u| spanned(&u, u.as_str().to_owned()));
+            ExprKind::Quantity { text, value, unit }
+        }
+        Rule::string => ExprKind::Str(string(e).value),
+        _ => {
+            let mut it = inner(e);
+            let h = it.next().expect("head");
+            let head = spanned(&h, h.as_str().to_owned());
+            let field = it.next().map(|f| spanned(&f, f.as_str().to_owned()));
+            ExprKind::Path { head, field }
+        }
+    };
+    Expr { kind, span }
+}
+
+fn arguments(pair: Pair<'_, Rule>) -> Vec<Argument> {
+    inner(pair)
+        .map(|a| {
+            let mut it = inner(a).collect::<Vec<_>>();
+            let value = expr(it.pop().expect("value"));
+            let name = it.pop().map(|n| spanned(&n, n.as_str().to_owned()));
+            Argument { name, value }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Arc;
+
+    use miette::NamedSource;
+
+    use super::*;
+
+    fn parse_text(text: &str) -> Result<File, Box<Diagnostic>> {
+        parse(&Arc::new(NamedSource::new("t.tl", text.to_owned())))
+    }
+
+    #[test]
+    fn a_scenario_parses_with_spans_and_comments() {
+        let text = "/// A drill.\n/// Two lines.\nscenario drill { // here\n  extends academy\n  ball at (0.5, uniform(-0.1, 0.1))\n  team left { GK at (-1, 0) CB at (10 m, 0) lazy not controllable }\n  end when score or steps >= 200\n}\n";
+        let file = parse_text(text).unwrap();
+        let [Item::Definition(d)] = file.items.as_slice() else { panic!("{:?}", file.items) };
+        assert_eq!(d.docs, ["A drill.", "Two lines."]);
+        assert_eq!(d.name.value, "drill");
+        assert_eq!(d.statements.len(), 4);
+        assert_eq!(file.comments.len(), 1);
+        assert_eq!(&text[file.comments[0].span.start..file.comments[0].span.end], "// here");
+        let StatementKind::Team(t) = &d.statements[2].kind else { panic!() };
+        assert_eq!(t.players.len(), 2);
+        assert_eq!(t.players[1].flags.iter().map(|f| f.value).collect::<Vec<_>>(), [Flag::Lazy, Flag::NotControllable]);
+        let Place::At(Expr { kind: ExprKind::Tuple(args), .. }) = &t.players[1].place else { panic!() };
+        let ExprKind::Quantity { value, unit: Some(u), .. } = &args[0].value.kind else { panic!() };
+        assert_eq!((*value, u.value.as_str()), (10.0, "m"));
+        let StatementKind::End(conds) = &d.statements[3].kind else { panic!() };
+        assert!(matches!(conds[1], Condition::Steps(_)));
+    }
+
+    #[test]
+    fn a_number_before_or_has_no_unit() {
+        let file = parse_text("scenario s { end when steps >= 400 or score }").unwrap();
+        let [Item::Definition(d)] = file.items.as_slice() else { panic!() };
+        let StatementKind::End(conds) = &d.statements[0].kind else { panic!() };
+        assert_eq!(conds.len(), 2);
+    }
+
+    #[test]
+    fn syntax_errors_point_at_the_token() {
+        let e = parse_text("scenario s {\n  ball at (0.5, 0.0\n}").unwrap_err();
+        assert_eq!(e.code, Code::Syntax);
+        assert!(e.message.starts_with("syntax error: expected"), "{}", e.message);
+    }
+}

@@ -70,7 +70,7 @@ pub(crate) fn plan(
         dir.y -= pos_t.y.signum() * 0.8;
     }
     let dir = dir.normalize_or(Vec2::X);
-    let mut best_value = 0.2 + 0.55 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0)
+    let mut best_value = 0.12 + 0.55 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0)
         - if pressure < 2.0 { 0.25 } else { 0.0 }
         + rng.noise(noise);
     let speed = if space > 6.0 { me.max_speed } else { 5.0 };
@@ -99,9 +99,27 @@ pub(crate) fn plan(
         };
     }
 
-    // Passes.
+    // Clearance: under pressure in his own third, a weaker team hoofs it long towards a wing.
+    if pos_t.x < -HALF_LENGTH + 30.0 && pressure < 3.0 {
+        let value = 0.35 + 0.25 * (1.0 - difficulty.theta) + if pressure < 1.8 { 0.2 } else { 0.0 } + rng.noise(noise);
+        if value > best_value {
+            best_value = value;
+            let wing = if pos_t.y >= 0.0 { 24.0 } else { -24.0 };
+            let aim = frame.vec2(Vec2::new(pos_t.x + 40.0, wing + rng.noise(8.0)));
+            best = Plan {
+                kick: Some(Kick { kind: KickKind::HighPass, target: KickTarget::Point(aim), height: 0.0, power: 0.8 }),
+                ..Plan::go(me.position, 0.0, aim - me.position)
+            };
+        }
+    }
+
+    // Passes: not to a team-mate in an offside position (a better team sees it more surely).
+    let offside_line = view.offside_line(side);
     for mate in mates {
         if !mate.active || mate.index == me.index || mate.is_keeper() {
+            continue;
+        }
+        if crate::rules::offside::beyond(mate, offside_line) && rng.unit() < 0.3 + 0.7 * difficulty.theta {
             continue;
         }
         let m_t = frame.vec2(mate.position);

@@ -28,7 +28,7 @@ impl Difficulty {
             reaction_ticks: (5.0 + 10.0 * (1.0 - theta)).round() as u16,
             hunt_distance: 35.0 * (0.3 + 0.7 * theta),
             decision_noise: 0.45 * (1.0 - theta) + 0.03,
-            aim_error: 0.4 + 1.6 * (1.0 - theta),
+            aim_error: 0.4 + 3.2 * (1.0 - theta),
         }
     }
 }

@@ -49,6 +49,8 @@ pub struct MatchView<'a> {
     pub tick: u64,
     /// Ticks the current owner has had the ball.
     pub owner_ticks: u32,
+    /// Whether the offside law applies.
+    pub offsides: bool,
 }
 
 impl MatchView<'_> {
@@ -60,6 +62,17 @@ impl MatchView<'_> {
     /// Which team has the ball at a player's feet.
     pub fn owner_side(&self) -> Option<Side> {
         self.owner.map(|g| self.players[g].side)
+    }
+
+    /// The offside line `side`'s attackers must stay behind, in their team frame (m along their
+    /// attack); infinite when offside does not apply.
+    pub fn offside_line(&self, side: Side) -> f32 {
+        if !self.offsides {
+            return f32::INFINITY;
+        }
+        let sign = side.attack_sign();
+        crate::rules::offside::line(self.team(side.opponent()), sign, self.ball.position.x * sign)
+            .unwrap_or(f32::INFINITY)
     }
 }
 
@@ -190,7 +203,7 @@ impl TeamAi {
             } else if let Some(plan) = pressing::plan(view, g, &analysis, &self.difficulty) {
                 plan
             } else {
-                let target = team_shape::position(view, g, analysis.frame);
+                let target = team_shape::position(view, g, analysis.frame, &self.difficulty);
                 let d = target.distance(p.position);
                 Plan::go(target, if d > 10.0 { p.max_speed * 0.9 } else { WALK_SPEED }, ball - p.position)
             };

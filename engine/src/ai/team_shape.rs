@@ -1,15 +1,28 @@
-//! Team shape: each player's place in the formation, shifted with the ball and with possession.
+//! Team shape: each player's place in the formation, shifted with the ball and with possession;
+//! forwards stay onside; without the ball, players near an opponent in their zone mark him.
 
 use glam::Vec2;
 
-use super::MatchView;
+use super::{Difficulty, MatchView};
 use crate::geometry::TeamFrame;
 use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 
+/// An opponent this close (m) to a player's place in the shape is marked by him.
+const MARK_RADIUS: f32 = 9.0;
+/// How far goal-side of his man a marker stands (m).
+const MARK_DISTANCE: f32 = 1.8;
+
+/// How far behind the offside line (m) a player of difficulty θ keeps: 1.5 m at θ = 1, and
+/// about a metre beyond it at θ = 0 (weak teams stray offside).
+pub fn onside_margin(theta: f32) -> f32 {
+    2.5 * theta - 1.0
+}
+
 /// Where player `g` should stand now (m, global frame): his home position, compressed towards the
 /// ball, pushed up when his team has the ball and dropped back when it defends. Forwards in
-/// possession make runs towards goal ahead of the ball.
-pub fn position(view: &MatchView, g: usize, frame: TeamFrame) -> Vec2 {
+/// possession make runs towards goal ahead of the ball, but stay onside; defending players mark an
+/// opponent in their zone, goal-side of him, more tightly at higher θ.
+pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Difficulty) -> Vec2 {
     let p = &view.players[g];
     let ball = frame.vec2(view.ball.xy());
     let ours = match view.owner {
@@ -24,6 +37,10 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame) -> Vec2 {
         x = x.max(ball.x + 8.0);
         y *= 0.7;
     }
+    if ours && view.owner != Some(g) {
+        // Stay onside: the offside line, less a margin that shrinks with θ.
+        x = x.min(view.offside_line(p.side) - onside_margin(difficulty.theta));
+    }
     if !ours && p.role.is_defender() {
         // The back line stays goal-side of the ball.
         x = x.min(ball.x - 4.0);
@@ -31,6 +48,9 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame) -> Vec2 {
     x = x.clamp(-HALF_LENGTH + 4.0, HALF_LENGTH - 10.0);
     y = y.clamp(-HALF_WIDTH + 2.0, HALF_WIDTH - 2.0);
     let mut target = Vec2::new(x, y);
+    if !ours && view.mode == crate::game::GameMode::Normal && !p.is_keeper() {
+        target = mark(view, target, frame, difficulty.theta);
+    }
     // At an opponents' set piece keep the distance the laws ask for.
     if view.mode != crate::game::GameMode::Normal && !ours {
         let away = target - ball;
@@ -39,4 +59,40 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame) -> Vec2 {
         }
     }
     frame.vec2(target)
+}
+
+/// Moves a defending player's place `target` (team frame) towards the goal side of the nearest
+/// opponent in his zone, if any.
+fn mark(view: &MatchView, target: Vec2, frame: TeamFrame, theta: f32) -> Vec2 {
+    let own_goal = Vec2::new(-HALF_LENGTH, 0.0);
+    let mut best = None;
+    let mut best_d2 = MARK_RADIUS * MARK_RADIUS;
+    for g in view.ranges.iter().flat_map(|r| r.clone()) {
+        let o = &view.players[g];
+        // Opponents of the marker: their frame is the other one.
+        if !o.active || o.is_keeper() || frame.vec2(Vec2::X).x * o.side.attack_sign() > 0.0 || view.owner == Some(g) {
+            continue;
+        }
+        let at = frame.vec2(o.position);
+        let d2 = at.distance_squared(target);
+        if d2 < best_d2 {
+            best_d2 = d2;
+            best = Some(at);
+        }
+    }
+    let Some(man) = best else { return target };
+    let spot = man + (own_goal - man).normalize_or(Vec2::NEG_X) * MARK_DISTANCE;
+    target.lerp(spot, 0.3 + 0.6 * theta)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn better_teams_keep_further_onside() {
+        assert!(onside_margin(1.0) > 1.0);
+        assert!(onside_margin(0.0) < 0.0);
+        assert!(onside_margin(0.6) > onside_margin(0.3));
+    }
 }

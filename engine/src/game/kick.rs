@@ -60,7 +60,8 @@ pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2
     let to = target - from;
     let distance = to.length().max(0.5);
     let dir = if to.length_squared() > 1e-6 { to / distance } else { kicker.facing };
-    let error = 0.015 + 0.06 * (1.0 - accuracy);
+    // Aim error (rad): small for the best, growing faster as skill falls.
+    let error = 0.015 + 0.04 * (1.0 - accuracy) + 0.06 * (1.0 - accuracy) * (1.0 - accuracy);
     let dir = rotate_small(dir, rng.noise(error * 1.7).clamp(-0.19, 0.19));
     let velocity = match kick.kind {
         KickKind::ShortPass => {

@@ -4,7 +4,7 @@
 use glam::Vec3;
 
 use super::{GameMode, Match};
-use crate::geometry::pitch::{BALL_RADIUS, in_penalty_area};
+use crate::geometry::pitch::{BALL_RADIUS, HALF_LENGTH, in_penalty_area};
 use crate::rules::{self, Stoppage, fouls};
 use crate::stats::Event;
 
@@ -33,6 +33,8 @@ const TACKLE_CHANCE: f32 = 0.025;
 const SLIDE_REACH: f32 = 1.3;
 /// Distance between two players' centres (m) at which a slide meets the man.
 const BODY_CONTACT: f32 = 0.9;
+/// Share of a keeper's parries near his goal that go round the post for a corner.
+const PARRY_WIDE: f32 = 0.4;
 /// Ticks a dispossessed player cannot touch the ball.
 const TACKLED_COOLDOWN: u16 = 40;
 
@@ -223,6 +225,13 @@ impl Match {
         out = Vec3::new(out.x * 0.55, out.y * 0.55, out.z * 0.5);
         out.x += self.rng.noise(1.5);
         out.y += self.rng.noise(1.5);
+        let near_own_goal = p.position.x * p.side.attack_sign() < -HALF_LENGTH + 6.0;
+        if keeper_hands && near_own_goal && self.rng.chance(PARRY_WIDE) {
+            // Tipped round the post: on over the goal line, wide of the goal (a corner).
+            let wide = if p.position.y + ball.velocity.y * 0.1 >= 0.0 { 1.0 } else { -1.0 };
+            let speed = out.length().max(6.0);
+            out = Vec3::new(-p.side.attack_sign() * 0.5 * speed, wide * 0.8 * speed, out.z.max(1.0));
+        }
         self.ball.velocity = out;
         self.players[g].touch_cooldown = 15;
     }

@@ -87,6 +87,7 @@ impl Match {
             set_piece_ticks: self.set_piece_ticks,
             tick: self.in_play_ticks,
             owner_ticks: self.owner_ticks,
+            offsides: self.offsides,
         };
         for side in 0..2 {
             let range = self.ranges[side].clone();

@@ -39,7 +39,7 @@ pub const ADVANTAGE_TICKS: u16 = 300;
 pub const FOUL_SEVERITY: f32 = 1.0;
 /// Chance per tick that a standing challenge trips the carrier, for a tackler of no skill from
 /// the front (less with skill, twice from behind).
-const TRIP_CHANCE: f32 = 0.0016;
+const TRIP_CHANCE: f32 = 0.005;
 
 /// A foul waiting for the advantage to show.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

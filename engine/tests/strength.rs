@@ -14,6 +14,10 @@ fn matches(left: f32, right: f32) -> Vec<MatchStats> {
             let mut scenario = common::scenario("11_vs_11_stochastic");
             scenario.left_team_difficulty = left;
             scenario.right_team_difficulty = right;
+            // The two formations differ: alternate them between the sides, as GRF's odd episodes do.
+            if seed % 2 == 1 {
+                std::mem::swap(&mut scenario.left_team, &mut scenario.right_team);
+            }
             let config = EnvConfig { action_set: ActionSet::V2, ..EnvConfig::default() };
             let mut env = Env::with_config(scenario, config, 100 + seed).unwrap();
             loop {

@@ -1,5 +1,6 @@
 //! Team shape: each player's place in the formation, shifted with the ball and with possession;
-//! forwards stay onside; without the ball, players near an opponent in their zone mark him.
+//! midfielders near the ball make support runs, forwards run in behind but stay onside; without
+//! the ball, players near an opponent in their zone mark him.
 
 use glam::Vec2;
 
@@ -9,6 +10,8 @@ use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 
 /// An opponent this close (m) to a player's place in the shape is marked by him.
 const MARK_RADIUS: f32 = 9.0;
+/// A midfielder whose place is this close (m) to the ball makes a support run.
+const SUPPORT_RANGE: f32 = 25.0;
 /// How far goal-side of his man a marker stands (m).
 const MARK_DISTANCE: f32 = 1.8;
 
@@ -36,6 +39,16 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Diffi
         // Off-the-ball run: get ahead of the ball, towards the goal, into the channel.
         x = x.max(ball.x + 8.0);
         y *= 0.7;
+    }
+    if ours && view.owner != Some(g) && !p.role.is_defender() && !p.role.is_attacker() && !p.is_keeper() {
+        // Support run: a midfielder near the ball offers a pass ahead of it, on his side of it.
+        if Vec2::new(x, y).distance(ball) < SUPPORT_RANGE {
+            let lateral = if home.y >= ball.y { 1.0 } else { -1.0 };
+            let support = Vec2::new(ball.x + 4.0, ball.y + lateral * 8.0);
+            let w = 0.1 + 0.2 * difficulty.theta;
+            x += (support.x - x) * w;
+            y += (support.y - y) * w;
+        }
     }
     if ours && view.owner != Some(g) {
         // Stay onside: the offside line, less a margin that shrinks with θ.

@@ -3,12 +3,17 @@
 //! ```text
 //! touchline run academy_empty_goal_close --episodes 10
 //! touchline run 11_vs_11_easy_stochastic --policy random --seed 7 --json
-//! touchline scenarios
+//! touchline run drills/my_drill.tl
+//! touchline check drills/*.tl
+//! touchline compile drills/my_drill.tl -o my_drill.json
+//! touchline fmt drills/my_drill.tl
+//! touchline list
 //! ```
 //!
-//! Exit codes: 0 on success; 1 when the engine fails or the output cannot be written; 2 for bad
-//! input (usage errors, an unknown scenario, an unreadable or invalid scenario file, an agent
-//! configuration the scenario cannot take). Errors are printed to stderr as miette diagnostics.
+//! Exit codes: 0 on success; 1 when `check` finds an error, `fmt --check` finds an unformatted
+//! file, the engine fails or the output cannot be written; 2 for bad input (usage errors, an
+//! unknown scenario, an unreadable, invalid or non-compiling scenario file, an agent configuration
+//! the scenario cannot take). Errors are printed to stderr as miette diagnostics.
 
 mod cmd;
 
@@ -33,8 +38,15 @@ struct Cli {
 enum Command {
     /// Play episodes of a scenario with a simple policy and report scores, rewards and speed.
     Run(cmd::run::RunArgs),
-    /// List the stdlib scenarios.
-    Scenarios(cmd::scenarios::ScenariosArgs),
+    /// Compile `.tl` files and print every error and warning (exit 1 on any error).
+    Check(cmd::check::CheckArgs),
+    /// Compile a scenario to JSON (or back to `.tl` with --tl).
+    Compile(cmd::compile::CompileArgs),
+    /// Rewrite `.tl` files in the canonical layout (comments kept).
+    Fmt(cmd::fmt::FmtArgs),
+    /// List the stdlib scenarios with their descriptions.
+    #[command(alias = "scenarios")]
+    List(cmd::scenarios::ScenariosArgs),
 }
 
 /// Everything a command can fail with.
@@ -75,6 +87,38 @@ pub(crate) enum CliError {
         source: EngineError,
     },
 
+    /// `touchline check` found errors (already printed).
+    #[error("{summary}")]
+    #[diagnostic(code(tl::cli::check))]
+    Check {
+        /// The summary line.
+        summary: String,
+    },
+
+    /// A `.tl` file has a syntax error (`touchline fmt`).
+    #[error(transparent)]
+    #[diagnostic(transparent)]
+    Syntax(Box<touchline_dsl::Diagnostic>),
+
+    /// A file to format could not be read.
+    #[error("cannot read `{path}`")]
+    #[diagnostic(code(tl::cli::read))]
+    Read {
+        /// The path.
+        path: String,
+        /// The operating system's error.
+        #[source]
+        source: io::Error,
+    },
+
+    /// `touchline fmt --check` found files that are not formatted.
+    #[error("not formatted: {files}")]
+    #[diagnostic(code(tl::cli::fmt), help("run `touchline fmt` on them"))]
+    Unformatted {
+        /// The files, comma-separated.
+        files: String,
+    },
+
     /// Writing to stdout failed.
     #[error("cannot write the output")]
     #[diagnostic(code(tl::cli::output))]
@@ -85,8 +129,8 @@ impl CliError {
     /// 2 for bad input, 1 for failures while running.
     fn exit_code(&self) -> u8 {
         match self {
-            CliError::Load(_) | CliError::Config { .. } => 2,
-            CliError::Engine { .. } | CliError::Output(_) => 1,
+            CliError::Load(_) | CliError::Config { .. } | CliError::Syntax(_) | CliError::Read { .. } => 2,
+            CliError::Check { .. } | CliError::Unformatted { .. } | CliError::Engine { .. } | CliError::Output(_) => 1,
         }
     }
 }
@@ -99,7 +143,10 @@ fn main() -> ExitCode {
 
     let result = match cli.command {
         Command::Run(args) => cmd::run::run(&args),
-        Command::Scenarios(args) => cmd::scenarios::run(&args),
+        Command::Check(args) => cmd::check::run(&args),
+        Command::Compile(args) => cmd::compile::run(&args),
+        Command::Fmt(args) => cmd::fmt::run(&args),
+        Command::List(args) => cmd::scenarios::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

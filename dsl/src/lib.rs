@@ -22,14 +22,16 @@
 mod compile;
 mod diag;
 pub mod diagnostic;
+mod format;
 mod load;
 mod print;
 pub mod stdlib;
 mod suggest;
 pub mod syntax;
 
-pub use compile::{Compiled, PRELUDE, compile, compile_file};
+pub use compile::{Compiled, PRELUDE, check_file, compile, compile_file};
 pub use diag::{JsonError, LoadError, render_plain};
 pub use diagnostic::{Code, Diagnostic, Diagnostics};
+pub use format::format_source;
 pub use load::{load, load_file, load_json};
 pub use print::scenario_to_tl;

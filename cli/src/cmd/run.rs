@@ -20,8 +20,8 @@ use crate::CliError;
 /// Arguments of `touchline run`.
 #[derive(Debug, Args)]
 pub(crate) struct RunArgs {
-    /// A stdlib scenario name (see `touchline scenarios`) or the path of a compiled `.json`
-    /// scenario.
+    /// A stdlib scenario name (see `touchline list`), a `.tl` scenario file, or a compiled
+    /// `.json` scenario.
     scenario: String,
 
     /// Episodes to play; the first starts from the seed, each later one from `reset()`.

@@ -1,5 +1,5 @@
-//! `touchline scenarios`: the stdlib scenarios, one a line, with their size, length and
-//! description.
+//! `touchline list` (alias `scenarios`): the stdlib scenarios, one a line, with their size,
+//! length and description; `--tests` adds GRF's test scenarios.
 
 use std::io::{self, Write};
 
@@ -13,11 +13,18 @@ pub(crate) struct ScenariosArgs {
     /// Print only the names, one a line (for scripts).
     #[arg(long)]
     names: bool,
+
+    /// Also list GRF's test scenarios (`tests/corner_test`, …).
+    #[arg(long)]
+    tests: bool,
 }
 
-/// Runs `touchline scenarios`.
+/// Runs `touchline list`.
 pub(crate) fn run(args: &ScenariosArgs) -> Result<(), CliError> {
-    let names = touchline_dsl::stdlib::names();
+    let mut names: Vec<&str> = touchline_dsl::stdlib::names().to_vec();
+    if args.tests {
+        names.extend(touchline_dsl::stdlib::test_names());
+    }
     let mut out = io::stdout().lock();
     if args.names {
         for name in names {
@@ -29,7 +36,7 @@ pub(crate) fn run(args: &ScenariosArgs) -> Result<(), CliError> {
     writeln!(out, "{:width$}  players  steps  description", "scenario")?;
     for name in names {
         // Embedded scenarios are tested to parse; print the bare name should one ever fail.
-        match touchline_dsl::stdlib::scenario(name) {
+        match touchline_dsl::load(name).ok() {
             Some(s) => writeln!(
                 out,
                 "{name:width$}  {:>7}  {:>5}  {}",

@@ -66,6 +66,40 @@ pub fn compile_file(path: &Path) -> Result<Compiled, Diagnostics> {
     }
 }
 
+/// Checks a `.tl` file as `touchline check` does: a file with a scenario is compiled as by
+/// [`compile_file`]; a file of presets only (a library others import) has each preset resolved
+/// and checked. Returns every diagnostic, errors and warnings.
+pub fn check_file(path: &Path) -> Diagnostics {
+    let text = match std::fs::read_to_string(path) {
+        Ok(text) => text,
+        Err(_) => return compile_file(path).err().unwrap_or_default(),
+    };
+    let library = syntax::parse(&Arc::new(NamedSource::new(path.display().to_string(), text.clone())))
+        .map(|f| {
+            let defs: Vec<Kind> =
+                f.items.iter().filter_map(|i| if let Item::Definition(d) = i { Some(d.kind) } else { None }).collect();
+            !defs.is_empty() && defs.iter().all(|k| *k == Kind::Preset)
+        })
+        .unwrap_or(false);
+    if !library {
+        return match compile_file(path) {
+            Ok(c) => c.warnings,
+            Err(d) => d,
+        };
+    }
+    let mut c = Compiler::default();
+    let origin = path.display().to_string();
+    if let Some(main) = c.load(text, &origin, path.parent().map(Path::to_path_buf), false) {
+        c.prelude = c.load(PRELUDE.to_owned(), "prelude.tl", None, true);
+        let count = c.definitions(main).count();
+        for def in 0..count {
+            c.resolve(main, def);
+        }
+        c.report_unused_imports();
+    }
+    c.diags
+}
+
 /// One parsed file.
 struct Unit {
     source: Source,

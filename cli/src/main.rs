@@ -3,6 +3,7 @@
 //! ```text
 //! touchline run academy_empty_goal_close --episodes 10
 //! touchline run 11_vs_11_easy_stochastic --policy random --seed 7 --json
+//! touchline run 11_vs_11_stochastic --episodes 20 --stats
 //! touchline run drills/my_drill.tl
 //! touchline check drills/*.tl
 //! touchline compile drills/my_drill.tl -o my_drill.json

@@ -1,5 +1,6 @@
 //! The ball carrier's choice: shoot, pass (weighing progress, the receiver's space and the risk of
-//! interception) or dribble towards goal around opponents. Each option gets a value; noise scaled
+//! interception; never knowingly to an offside team-mate), cross from wide, clear under pressure
+//! in his own third, or dribble towards goal around opponents. Each option gets a value; noise scaled
 //! by the difficulty blurs the values before the best is taken.
 
 use glam::Vec2;
@@ -110,6 +111,32 @@ pub(crate) fn plan(
                 kick: Some(Kick { kind: KickKind::HighPass, target: KickTarget::Point(aim), height: 0.0, power: 0.8 }),
                 ..Plan::go(me.position, 0.0, aim - me.position)
             };
+        }
+    }
+
+    // Cross: from wide in the final third into the box, to the team-mate best placed there.
+    if pos_t.x > HALF_LENGTH - 28.0 && pos_t.y.abs() > 12.0 {
+        let target = mates
+            .iter()
+            .filter(|m| m.active && m.index != me.index && !m.is_keeper())
+            .map(|m| frame.vec2(m.position))
+            .filter(|m| m.x > HALF_LENGTH - 17.0 && m.y.abs() < 11.0)
+            .max_by(|a, b| a.x.total_cmp(&b.x));
+        if let Some(at) = target {
+            let value = 0.55 + 0.15 * difficulty.theta + rng.noise(noise);
+            if value > best_value {
+                best_value = value;
+                let aim = frame.vec2(at + Vec2::new(0.0, rng.noise(2.0)));
+                best = Plan {
+                    kick: Some(Kick {
+                        kind: KickKind::HighPass,
+                        target: KickTarget::Point(aim),
+                        height: 0.0,
+                        power: 0.6,
+                    }),
+                    ..Plan::go(me.position, 0.0, aim - me.position)
+                };
+            }
         }
     }
 

@@ -46,6 +46,34 @@ fn run_json_reports_every_episode() {
 }
 
 #[test]
+fn run_stats_prints_match_statistics_per_episode_and_on_average() {
+    let output = touchline(&["run", "11_vs_11_easy_stochastic", "--episodes", "2", "--stats"]);
+    assert_eq!(output.status.code(), Some(0), "stderr: {}", stderr(&output));
+    let text = stdout(&output);
+    for row in [
+        "goals",
+        "shots",
+        "on target",
+        "passes",
+        "completed",
+        "possession %",
+        "fouls",
+        "yellow cards",
+        "red cards",
+        "offsides",
+        "corners",
+        "throw-ins",
+    ] {
+        assert_eq!(text.lines().filter(|l| l.trim_start().starts_with(row)).count(), 3, "{row} in\n{text}");
+    }
+    assert!(text.contains("mean match statistics per episode"), "{text}");
+    let json = touchline(&["run", "academy_empty_goal_close", "--episodes", "2", "--stats", "--json"]);
+    let report: serde_json::Value = serde_json::from_slice(&json.stdout).expect("stdout is one JSON document");
+    assert!(report["episodes"][0]["stats"]["passes"].is_array());
+    assert!(report["summary"]["mean_stats"]["possession"].is_array());
+}
+
+#[test]
 fn run_prints_episodes_and_summary() {
     let output =
         touchline(&["run", "academy_empty_goal_close", "--episodes", "2", "--policy", "random", "--seed", "4"]);

@@ -115,13 +115,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
                 }
             }
             StatementKind::End(conditions) => end(conditions, s, r),
-            StatementKind::StartFrom(path) => r.error_help(
-                Code::StartState,
-                "`start from` is not available yet",
-                path.span,
-                "saved states cannot start a scenario yet",
-                "start from the scenario's own placement; saved states load in Python with env.unwrapped.set_state",
-            ),
+            StatementKind::StartFrom(path) => start_from(path, s, r),
         }
     }
     // Requires name players, so they are read once this body's teams are in place.
@@ -134,6 +128,25 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
         {
             s.requires.push(req);
         }
+    }
+}
+
+/// `start from "file"`: the saved state's bytes, read relative to the scenario file.
+fn start_from(path: &syntax::Spanned<String>, s: &mut Scenario, r: &mut Reader<'_>) {
+    let origin = std::path::Path::new(r.source.name());
+    let full = origin.parent().unwrap_or(std::path::Path::new("")).join(&path.value);
+    match std::fs::read(&full) {
+        Ok(bytes) => s.start_state = Some(bytes),
+        Err(e) => r.error_help(
+            Code::StartState,
+            format!("cannot read the saved state `{}`: {e}", path.value),
+            path.span,
+            "not readable",
+            format!(
+                "the path is relative to this file ({}); save a state with env.unwrapped.get_state() in Python",
+                full.display()
+            ),
+        ),
     }
 }
 

@@ -92,6 +92,14 @@ pub(super) fn check(s: &Scenario, o: &Origins, source: &Source, name_span: Span,
         diags.push(at_name(Code::OutOfRange, e.to_string(), "this scenario"));
         return;
     }
+    if s.start_state.is_some()
+        && let Err(e) = touchline_engine::Env::new(s.clone(), 0)
+    {
+        diags.push(
+            at_name(Code::StartState, format!("the saved state cannot start this scenario: {e}"), "this scenario")
+                .with_help("save the state from a match of this scenario (or one with the same team sizes)"),
+        );
+    }
     if !s.requires.is_empty() {
         let acceptance = s.require_acceptance(ACCEPTANCE_SAMPLES);
         let failure = (1.0 - f64::from(acceptance)).powi(MAX_PLACEMENT_TRIES as i32);

@@ -76,6 +76,8 @@ pub struct Env {
     fixed_control: [bool; 2],
     /// The reward terms paid each step.
     reward_plan: RewardPlan,
+    /// The saved match every episode starts from (the scenario's `start_state`).
+    start: Option<Box<Match>>,
     /// Identifies scenario and configuration, so that snapshots restore only where they belong.
     fingerprint: u64,
     /// Everything that changes while the env plays (what a [`Snapshot`] saves).
@@ -123,6 +125,10 @@ impl Env {
         let n = controllers.len();
         let game = Match::new(&scenario, 0, seed);
         let reward_plan = RewardPlan::new(&scenario, &config)?;
+        let start = match &scenario.start_state {
+            Some(bytes) => Some(Box::new(snapshot::start_match(&scenario, bytes)?)),
+            None => None,
+        };
         if let Some(crate::scenario::EndCondition::Script { path }) =
             scenario.end_when.iter().find(|c| matches!(c, crate::scenario::EndCondition::Script { .. }))
         {
@@ -135,6 +141,7 @@ impl Env {
         }
         let mut env = Env {
             reward_plan,
+            start,
             fixed_control: [agents[0] == controllable[0], agents[1] == controllable[1]],
             scenario,
             config,
@@ -177,7 +184,10 @@ impl Env {
     fn begin(&mut self, episode: u64) {
         self.state.episode = episode;
         self.state.fresh = true;
-        self.state.game = Match::new(&self.scenario, episode, self.state.seed);
+        self.state.game = match &self.start {
+            Some(saved) => saved.restarted(&self.scenario, episode, self.state.seed),
+            None => Match::new(&self.scenario, episode, self.state.seed),
+        };
         self.state.steps = 0;
         self.state.done = false;
         self.state.score_diff = 0;

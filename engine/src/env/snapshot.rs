@@ -112,6 +112,23 @@ impl Snapshot {
     }
 }
 
+/// The match saved in `bytes` (a serialised [`Snapshot`]), checked to fit `scenario`'s teams.
+pub(super) fn start_match(scenario: &crate::Scenario, bytes: &[u8]) -> Result<Match, EngineError> {
+    let snapshot = Snapshot::from_bytes(bytes)?;
+    let game = snapshot.state.game;
+    let saved = [game.team(crate::geometry::Side::Left).len(), game.team(crate::geometry::Side::Right).len()];
+    let wanted = [scenario.left_team.len(), scenario.right_team.len()];
+    if saved != wanted {
+        return Err(EngineError::InvalidScenario {
+            reason: format!(
+                "the saved state has {}v{} players but the scenario's teams have {}v{}",
+                saved[0], saved[1], wanted[0], wanted[1]
+            ),
+        });
+    }
+    Ok(game)
+}
+
 impl Env {
     /// Identifies the scenario and configuration a snapshot belongs to (computed once, in
     /// [`Env::with_config`]).

@@ -207,6 +207,25 @@ impl Match {
         self.offsides
     }
 
+    /// This match state as the start of an episode of `scenario` (its `start_state`): positions,
+    /// velocities and game mode as saved; score and statistics at zero; the scenario's
+    /// difficulties; the random stream of `(seed, episode)` as [`Match::new`] draws it.
+    pub(crate) fn restarted(&self, scenario: &Scenario, episode: u64, seed: u64) -> Match {
+        let mut m = self.clone();
+        let difficulty = [scenario.left_team_difficulty, scenario.right_team_difficulty];
+        m.difficulty = difficulty;
+        m.ai = [
+            TeamAi::new(Side::Left, difficulty[0], m.ranges[0].len()),
+            TeamAi::new(Side::Right, difficulty[1], m.ranges[1].len()),
+        ];
+        m.score = [0, 0];
+        m.stats = MatchStats::default();
+        m.offsides = scenario.offsides;
+        let (seed, noisy) = if scenario.deterministic { (42, false) } else { (seed, true) };
+        m.rng = MatchRng::new(seed, if scenario.deterministic { 0 } else { episode }, noisy);
+        m
+    }
+
     /// All players, left team first, each team in observation order.
     #[inline]
     pub fn players(&self) -> &[Player] {

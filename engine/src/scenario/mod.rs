@@ -86,6 +86,28 @@ pub struct Scenario {
     /// Episode-end conditions beyond the three `end_episode_on_*` flags.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub end_when: Vec<EndCondition>,
+    /// A saved match (the bytes of a [`crate::Snapshot`], hex in JSON) every episode starts from
+    /// instead of the placement: players, ball and game mode as saved, the score at 0–0. The
+    /// saved match must have as many players a side as the teams here (`.tl`: `start from "file"`).
+    #[serde(default, skip_serializing_if = "Option::is_none", with = "start_state_hex")]
+    pub start_state: Option<Vec<u8>>,
+}
+
+/// `start_state` as a hex string in JSON.
+mod start_state_hex {
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub(super) fn serialize<S: Serializer>(bytes: &Option<Vec<u8>>, s: S) -> Result<S::Ok, S::Error> {
+        match bytes {
+            Some(b) => s.serialize_str(&hex::encode(b)),
+            None => s.serialize_none(),
+        }
+    }
+
+    pub(super) fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Vec<u8>>, D::Error> {
+        let text: Option<String> = Option::deserialize(d)?;
+        text.map(|t| hex::decode(t).map_err(serde::de::Error::custom)).transpose()
+    }
 }
 
 /// One player of a team: role, position in the team's own frame, and flags.
@@ -146,6 +168,7 @@ impl Default for Scenario {
             requires: Vec::new(),
             rewards: Vec::new(),
             end_when: Vec::new(),
+            start_state: None,
         }
     }
 }

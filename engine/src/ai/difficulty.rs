@@ -7,8 +7,9 @@ pub struct Difficulty {
     /// θ itself.
     pub theta: f32,
     /// Ticks between decisions: 5 + 10·(1 − θ), i.e. 50 ms at θ = 1 to 150 ms at θ = 0. GRF adds
-    /// (1 − θ)·100 ms of reaction time (grf.md §7.6).
-    pub reaction_ticks: u16,
+    /// (1 − θ)·100 ms of reaction time (grf.md §7.6). Fractional: the AI carries the remainder from
+    /// one decision to the next, so the mean interval is exactly this and smooth in θ.
+    pub reaction_ticks: f32,
     /// Distance (m) within which the nearest player presses the ball carrier: 35·(0.3 + 0.7·θ)
     /// (GRF scales its pressing threshold by 0.3 + 0.7·θ).
     pub hunt_distance: f32,
@@ -25,7 +26,7 @@ impl Difficulty {
         let theta = theta.clamp(0.0, 1.0);
         Difficulty {
             theta,
-            reaction_ticks: (5.0 + 10.0 * (1.0 - theta)).round() as u16,
+            reaction_ticks: 5.0 + 10.0 * (1.0 - theta),
             hunt_distance: 35.0 * (0.3 + 0.7 * theta),
             decision_noise: 0.45 * (1.0 - theta) + 0.03,
             aim_error: 0.4 + 3.2 * (1.0 - theta),
@@ -44,7 +45,8 @@ mod tests {
         assert!(hard.reaction_ticks < easy.reaction_ticks);
         assert!(hard.hunt_distance > easy.hunt_distance);
         assert!(hard.decision_noise < easy.decision_noise);
-        assert_eq!(Difficulty::new(1.0).reaction_ticks, 5);
+        assert_eq!(Difficulty::new(1.0).reaction_ticks, 5.0);
+        assert!(Difficulty::new(0.61).reaction_ticks < Difficulty::new(0.6).reaction_ticks);
         assert_eq!(Difficulty::new(7.0).theta, 1.0);
     }
 }

@@ -124,6 +124,8 @@ pub struct TeamAi {
     difficulty: Difficulty,
     plans: Vec<Plan>,
     next_think: u64,
+    /// Fraction of a tick carried over to the next decision interval.
+    think_carry: f32,
     /// Tick at which this team's keeper took hold of the ball.
     keeper_since: Option<u64>,
 }
@@ -136,6 +138,7 @@ impl TeamAi {
             difficulty: Difficulty::new(theta),
             plans: vec![Plan::default(); players],
             next_think: 0,
+            think_carry: 0.0,
             keeper_since: None,
         }
     }
@@ -158,7 +161,10 @@ impl TeamAi {
         // An event that needs an instant reaction: the ball changed hands or a set piece began.
         if view.tick >= self.next_think {
             self.think(view, rng);
-            self.next_think = view.tick + u64::from(self.difficulty.reaction_ticks);
+            let interval = self.difficulty.reaction_ticks + self.think_carry;
+            let whole = interval.floor();
+            self.think_carry = interval - whole;
+            self.next_think = view.tick + whole as u64;
         }
         for (i, plan) in self.plans.iter_mut().enumerate() {
             if agent_driven[i] {

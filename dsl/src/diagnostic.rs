@@ -63,11 +63,13 @@ pub enum Code {
     NoControllable,
     /// Warning: an import nothing uses.
     UnusedImport,
+    /// Warning: a GRF key that changes nothing in touchline (`real_time`, …).
+    NoEffect,
 }
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 25] = [
+    pub const ALL: [Code; 26] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -93,6 +95,7 @@ impl Code {
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
+        Code::NoEffect,
     ];
 
     /// The code as shown: `tl::E100` … `tl::W102`.
@@ -123,6 +126,7 @@ impl Code {
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",
+            Code::NoEffect => "tl::W103",
         }
     }
 

@@ -56,6 +56,9 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
             let _ = writeln!(out, "  {key} {}", number(value));
         }
     }
+    if s.game_engine_random_seed != base.game_engine_random_seed {
+        let _ = writeln!(out, "  game_engine_random_seed {}", s.game_engine_random_seed);
+    }
     if s.second_half != base.second_half {
         let _ = writeln!(out, "  second_half {}", s.second_half);
     }

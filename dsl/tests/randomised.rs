@@ -90,3 +90,18 @@ fn the_compiled_json_keeps_the_distributions() {
     assert_eq!(back, s);
     assert_eq!(back.draw(5, 9), s.draw(5, 9));
 }
+
+#[test]
+fn every_grf_scenario_config_key_is_accepted() {
+    let text = "scenario keys {\n  game_duration 10\n  deterministic true\n  game_engine_random_seed 7\n  offsides false\n  end_episode_on_score true\n  end_episode_on_out_of_play true\n  end_episode_on_possession_change true\n  left_team_difficulty 0.5\n  right_team_difficulty 0.25\n  second_half 5\n  control_all_players true\n  real_time false\n  reverse_team_processing false\n  ball at (0.1, 0.2)\n  team left { GK at (-1, 0) }\n  team right { GK at (-1, 0) }\n}\n";
+    let c = touchline_dsl::compile(text, "keys.tl").unwrap_or_else(|d| panic!("{}", d.render_plain()));
+    let s = &c.scenario;
+    assert_eq!((s.game_duration, s.game_engine_random_seed, s.second_half), (10, 7, 5));
+    assert!(s.deterministic && !s.offsides && s.control_all_players);
+    assert!(s.end_episode_on_score && s.end_episode_on_out_of_play && s.end_episode_on_possession_change);
+    assert_eq!((s.left_team_difficulty, s.right_team_difficulty, s.ball_position), (0.5, 0.25, [0.1, 0.2]));
+    let codes: Vec<&str> = c.warnings.items.iter().map(|d| d.code.as_str()).collect();
+    assert_eq!(codes, ["tl::W103", "tl::W103"], "real_time and reverse_team_processing change nothing");
+    let printed = touchline_dsl::scenario_to_tl(s);
+    assert_eq!(touchline_dsl::compile(&printed, "p.tl").unwrap().scenario, *s);
+}

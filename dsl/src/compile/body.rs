@@ -30,9 +30,12 @@ pub(crate) struct Origins {
 }
 
 /// The configuration keys and what they hold.
-const KEYS: [&str; 12] = [
+const KEYS: [&str; 15] = [
     "game_duration",
     "deterministic",
+    "game_engine_random_seed",
+    "real_time",
+    "reverse_team_processing",
     "offsides",
     "end_episode_on_score",
     "end_episode_on_out_of_play",
@@ -162,6 +165,27 @@ fn setting(s: &mut Scenario, key: &syntax::Spanned<String>, value: &Expr, r: &mu
     match k {
         "game_duration" => s.game_duration = r.steps(value, k, 1).unwrap_or(s.game_duration),
         "second_half" => s.second_half = r.steps(value, k, 0).unwrap_or(s.second_half),
+        "game_engine_random_seed" => {
+            s.game_engine_random_seed = r.steps(value, k, 0).map_or(s.game_engine_random_seed, u64::from);
+        }
+        // GRF keys about its renderer's pacing and internal update order: accepted for
+        // compatibility, with a warning that they change nothing here.
+        "real_time" | "reverse_team_processing" => {
+            if r.boolean(value).is_some() {
+                r.diags.push(
+                    Diagnostic::new(
+                        Code::NoEffect,
+                        format!("`{k}` has no effect in touchline"),
+                        r.source,
+                        key.span,
+                        "ignored",
+                    )
+                    .with_help(
+                        "touchline never sleeps to pace play and updates both teams symmetrically; remove the line",
+                    ),
+                );
+            }
+        }
         "left_team_difficulty" => s.left_team_difficulty = r.fraction(value, k).unwrap_or(s.left_team_difficulty),
         "right_team_difficulty" | "difficulty" => {
             s.right_team_difficulty = r.fraction(value, k).unwrap_or(s.right_team_difficulty);

@@ -105,7 +105,7 @@ pub struct Match {
 impl Match {
     /// Sets up a match from a (validated) scenario for 0-based episode `episode`: players at their
     /// formation places, ball at its start, play on (GRF's initial kickoff counts as taken on the
-    /// first tick, grf.md §3.4). `seed` picks the random stream; deterministic scenarios use 42.
+    /// first tick, grf.md §3.4). `seed` picks the random stream; deterministic scenarios use their `game_engine_random_seed` (42 by default).
     pub fn new(scenario: &Scenario, episode: u64, seed: u64) -> Match {
         Match::from_placement(scenario, scenario.draw(seed, episode), episode, seed)
     }
@@ -130,7 +130,8 @@ impl Match {
             }
         }
         let ranges = [0..left.len(), left.len()..left.len() + right.len()];
-        let (seed, noisy) = if scenario.deterministic { (42, false) } else { (seed, true) };
+        let (seed, noisy) =
+            if scenario.deterministic { (scenario.game_engine_random_seed, false) } else { (seed, true) };
         let n = players.len();
         let ball_start = ball_start_to_world(ball[0], ball[1]);
         let nearest = |side: Side| {
@@ -221,7 +222,8 @@ impl Match {
         m.score = [0, 0];
         m.stats = MatchStats::default();
         m.offsides = scenario.offsides;
-        let (seed, noisy) = if scenario.deterministic { (42, false) } else { (seed, true) };
+        let (seed, noisy) =
+            if scenario.deterministic { (scenario.game_engine_random_seed, false) } else { (seed, true) };
         m.rng = MatchRng::new(seed, if scenario.deterministic { 0 } else { episode }, noisy);
         m
     }

@@ -42,6 +42,10 @@ pub struct Scenario {
     pub game_duration: u32,
     /// Fixed seed (42) and no noise: identical actions give identical outcomes (default false).
     pub deterministic: bool,
+    /// The seed of a deterministic scenario's match (GRF `game_engine_random_seed`, default 42);
+    /// stochastic scenarios take the env's seed instead.
+    #[serde(skip_serializing_if = "is_default_seed")]
+    pub game_engine_random_seed: u64,
     /// Whether the offside law is applied (default true).
     pub offsides: bool,
     /// End the episode when either team scores (default false).
@@ -136,6 +140,13 @@ fn yes() -> bool {
     true
 }
 
+/// GRF's default `game_engine_random_seed`.
+const DEFAULT_SEED: u64 = 42;
+
+fn is_default_seed(seed: &u64) -> bool {
+    *seed == DEFAULT_SEED
+}
+
 impl PlayerEntry {
     /// A non-lazy, controllable player.
     pub fn new(role: Role, x: f32, y: f32) -> PlayerEntry {
@@ -151,6 +162,7 @@ impl Default for Scenario {
             description: String::new(),
             game_duration: 3000,
             deterministic: false,
+            game_engine_random_seed: DEFAULT_SEED,
             offsides: true,
             end_episode_on_score: false,
             end_episode_on_out_of_play: false,

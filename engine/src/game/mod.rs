@@ -221,6 +221,13 @@ impl Match {
         ];
         m.score = [0, 0];
         m.stats = MatchStats::default();
+        m.events.clear();
+        for p in &mut m.players {
+            // Top speed follows the scenario's difficulty; fatigue stays as saved.
+            let theta = difficulty[p.side.index()];
+            p.fresh_speed = crate::player::top_speed(p.attributes.speed * (0.3 + 0.7 * theta));
+            p.max_speed = p.fresh_speed * crate::player::fatigue::speed_factor(p.fatigue);
+        }
         m.offsides = scenario.offsides;
         let (seed, noisy) =
             if scenario.deterministic { (scenario.game_engine_random_seed, false) } else { (seed, true) };

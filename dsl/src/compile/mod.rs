@@ -89,8 +89,9 @@ pub fn check_file(path: &Path) -> Diagnostics {
     }
     let mut c = Compiler::default();
     let origin = path.display().to_string();
-    if let Some(main) = c.load(text, &origin, path.parent().map(Path::to_path_buf), false) {
-        c.prelude = c.load(PRELUDE.to_owned(), "prelude.tl", None, true);
+    let key = path.canonicalize().ok();
+    if let Some(main) = c.load(text, &origin, path.parent().map(Path::to_path_buf), false, key) {
+        c.prelude = c.load(PRELUDE.to_owned(), "prelude.tl", None, true, None);
         let count = c.definitions(main).count();
         for def in 0..count {
             c.resolve(main, def);
@@ -133,8 +134,9 @@ impl Compiler {
         if let Some(p) = &path {
             self.files.push(p.clone());
         }
-        let Some(main) = self.load(text, origin, dir, false) else { return Err(self.diags) };
-        let prelude = self.load(PRELUDE.to_owned(), "prelude.tl", None, true);
+        let key = path.as_ref().map(|p| p.canonicalize().unwrap_or_else(|_| p.clone()));
+        let Some(main) = self.load(text, origin, dir, false, key) else { return Err(self.diags) };
+        let prelude = self.load(PRELUDE.to_owned(), "prelude.tl", None, true, None);
         self.prelude = prelude;
         let scenarios: Vec<usize> =
             self.definitions(main).filter(|(_, d)| d.kind == Kind::Scenario).map(|(i, _)| i).collect();
@@ -177,7 +179,16 @@ impl Compiler {
     }
 
     /// Parses a file and, recursively, its imports.
-    fn load(&mut self, text: String, origin: &str, dir: Option<PathBuf>, embedded: bool) -> Option<usize> {
+    /// `key` (a canonical path) registers the file before its imports load, so that an import
+    /// cycle links back to it instead of loading it again.
+    fn load(
+        &mut self,
+        text: String,
+        origin: &str,
+        dir: Option<PathBuf>,
+        embedded: bool,
+        key: Option<PathBuf>,
+    ) -> Option<usize> {
         let source: Source = Arc::new(NamedSource::new(origin, text));
         let file = match syntax::parse(&source) {
             Ok(f) => f,
@@ -190,6 +201,9 @@ impl Compiler {
         let imports: Vec<syntax::Spanned<String>> =
             file.items.iter().filter_map(|i| if let Item::Import(p) = i { Some(p.clone()) } else { None }).collect();
         self.units.push(Unit { source: source.clone(), file, imports: Vec::new(), embedded });
+        if let Some(key) = key {
+            self.by_path.insert(key, index);
+        }
         self.check_duplicate_names(index);
         for import in imports {
             let Some(dir) = dir.as_ref().filter(|_| !embedded) else {
@@ -216,18 +230,9 @@ impl Compiler {
             match std::fs::read_to_string(&path) {
                 Ok(text) => {
                     self.files.push(path.clone());
-                    // Mark before loading so that import cycles end here.
-                    self.by_path.insert(key.clone(), usize::MAX);
-                    let loaded =
-                        self.load(text, &path.display().to_string(), path.parent().map(Path::to_path_buf), false);
-                    match loaded {
-                        Some(u) => {
-                            self.by_path.insert(key, u);
-                            self.units[index].imports.push((u, import.span));
-                        }
-                        None => {
-                            self.by_path.remove(&key);
-                        }
+                    let origin = path.display().to_string();
+                    if let Some(u) = self.load(text, &origin, path.parent().map(Path::to_path_buf), false, Some(key)) {
+                        self.units[index].imports.push((u, import.span));
                     }
                 }
                 Err(e) => self.diags.push(
@@ -303,9 +308,8 @@ impl Compiler {
         let u = match self.by_path.get(&key) {
             Some(&u) => u,
             None => {
-                let u = self.load(text.to_owned(), &key.display().to_string(), None, true)?;
-                self.by_path.insert(key, u);
-                u
+                let origin = key.display().to_string();
+                self.load(text.to_owned(), &origin, None, true, Some(key))?
             }
         };
         find(self, u)

@@ -27,7 +27,15 @@ pub(crate) struct Origins {
     pub(crate) players: [Vec<Loc>; 2],
     /// The `ball` statement.
     pub(crate) ball: Option<Loc>,
+    /// Whether each side's `team` statement had errors (an unknown role or formation, a bad
+    /// place): its players are then incomplete, and counting them would only repeat the error.
+    pub(crate) team_errors: [bool; 2],
+    /// Each `require` statement of the merged scenario, in order.
+    pub(crate) requires: Vec<Loc>,
 }
+
+/// Words that begin a statement (for "is the team block's `}` missing?").
+const STATEMENT_KEYWORDS: [&str; 7] = ["ball", "team", "require", "reward", "end", "on", "extends"];
 
 /// The configuration keys and what they hold.
 const KEYS: [&str; 15] = [
@@ -65,22 +73,21 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             StatementKind::Setting { key, .. } => key.value.clone(),
             StatementKind::Require { .. } | StatementKind::Reward { .. } => String::new(),
         };
+        // A team block may be long: its first line (`team left …`) stands for it.
+        let head = match &st.kind {
+            StatementKind::Team(t) => Span { start: st.span.start, end: t.side.span.end },
+            _ => st.span,
+        };
         if !key.is_empty() {
             if let Some(first) = seen.get(&key) {
                 r.diags.push(
-                    Diagnostic::new(
-                        Code::Duplicate,
-                        format!("`{key}` is given twice"),
-                        r.source,
-                        st.span,
-                        "again here",
-                    )
-                    .with_label(*first, "first given here")
-                    .with_help("a definition states each thing once; remove one of them"),
+                    Diagnostic::new(Code::Duplicate, format!("`{key}` is given twice"), r.source, head, "again here")
+                        .with_label(*first, "first given here")
+                        .with_help("a definition states each thing once; remove one of them"),
                 );
                 continue;
             }
-            seen.insert(key, st.span);
+            seen.insert(key, head);
         }
         match &st.kind {
             StatementKind::Extends(_) => {}
@@ -94,11 +101,12 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             }
             StatementKind::OddBall(place) => match r.place(place, Frame::Ball) {
                 Some((nominal, None)) => s.odd_episode_ball_position = Some(nominal),
-                Some((_, Some(_))) => r.error(
+                Some((_, Some(_))) => r.error_help(
                     Code::WrongType,
                     "on odd episodes the ball starts at a fixed point",
                     st.span,
                     "random place not allowed here",
+                    "write `on odd episodes ball at (x, y)`; to randomise every episode, make `ball` random instead",
                 ),
                 None => {}
             },
@@ -124,12 +132,14 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
     // Requires name players, so they are read once this body's teams are in place.
     if !requires.is_empty() {
         s.requires.clear();
+        origins.requires.clear();
     }
     for st in requires {
         if let StatementKind::Require { lhs, at_least, rhs } = &st.kind
             && let Some(req) = require(lhs, *at_least, rhs, s, r)
         {
             s.requires.push(req);
+            origins.requires.push(Loc { source: r.source.clone(), span: st.span });
         }
     }
 }
@@ -220,6 +230,7 @@ fn setting(s: &mut Scenario, key: &syntax::Spanned<String>, value: &Expr, r: &mu
 
 fn team(t: &syntax::Team, s: &mut Scenario, origins: &mut Origins, r: &mut Reader<'_>) {
     let side = t.side.value;
+    let errors_before = r.diags.errors().count();
     let mut entries = Vec::new();
     let mut locs = Vec::new();
     if let Some(name) = &t.formation {
@@ -251,6 +262,8 @@ fn team(t: &syntax::Team, s: &mut Scenario, origins: &mut Origins, r: &mut Reade
                 if Role::from_name(&upper).is_some() { vec![] } else { suggest::closest(&p.role.value, &names) };
             let help = if Role::from_name(&upper).is_some() {
                 format!("roles are upper case: `{upper}`")
+            } else if STATEMENT_KEYWORDS.contains(&p.role.value.as_str()) {
+                format!("`{}` starts a statement: is the `}}` closing this team block missing above it?", p.role.value)
             } else {
                 suggest_help(&close, &format!("the roles are {}", names.join(" ")))
             };
@@ -278,6 +291,7 @@ fn team(t: &syntax::Team, s: &mut Scenario, origins: &mut Origins, r: &mut Reade
     }
     let i = usize::from(side == syntax::Side::Right);
     origins.team[i] = Some(Loc { source: r.source.clone(), span: t.side.span });
+    origins.team_errors[i] = r.diags.errors().count() > errors_before;
     origins.players[i] = locs;
     match side {
         syntax::Side::Left => s.left_team = entries,
@@ -294,12 +308,28 @@ fn reward_kind(term: &syntax::RewardTerm, r: &mut Reader<'_>) -> Option<RewardKi
         ExprKind::Path { head, field: None } => (head, &[][..]),
         ExprKind::Call { name, args } => (name, args.as_slice()),
         _ => {
-            r.error(Code::WrongType, format!("expected a reward, found {}", e.describe()), e.span, "not a reward");
+            r.error_help(
+                Code::WrongType,
+                format!("expected a reward, found {}", e.describe()),
+                e.span,
+                "not a reward",
+                "the rewards are scoring, checkpoint(count, value) and script \"file.rhai\"",
+            );
             return None;
         }
     };
     match name.value.as_str() {
         "scoring" if args.is_empty() => Some(RewardKind::Scoring),
+        "scoring" => {
+            r.error_help(
+                Code::Arguments,
+                "`scoring` takes no arguments",
+                e.span,
+                "no arguments here",
+                "write `scoring`; to scale it, add `weight W` to the reward statement",
+            );
+            None
+        }
         "checkpoint" | "checkpoints" => {
             let (mut count, mut value) = (10u8, 0.1f32);
             for (i, a) in args.iter().enumerate() {
@@ -308,7 +338,13 @@ fn reward_kind(term: &syntax::RewardTerm, r: &mut Reader<'_>) -> Option<RewardKi
                     "count" => {
                         let n = r.steps(&a.value, "the checkpoint count", 1)?;
                         if n > 100 {
-                            r.error(Code::OutOfRange, "at most 100 checkpoints", a.value.span, "too many");
+                            r.error_help(
+                                Code::OutOfRange,
+                                format!("at most 100 checkpoints, found {n}"),
+                                a.value.span,
+                                "too many",
+                                "write a count from 1 to 100 (GRF uses 10)",
+                            );
                             return None;
                         }
                         count = n as u8;
@@ -388,7 +424,13 @@ fn end(conditions: &[Condition], s: &mut Scenario, r: &mut Reader<'_>) {
 
 fn require(lhs: &Expr, at_least: bool, rhs: &Expr, s: &Scenario, r: &mut Reader<'_>) -> Option<Require> {
     let ExprKind::Call { name, args } = &lhs.kind else {
-        r.error(Code::WrongType, format!("expected `distance(a, b)`, found {}", lhs.describe()), lhs.span, "here");
+        r.error_help(
+            Code::WrongType,
+            format!("expected `distance(a, b)`, found {}", lhs.describe()),
+            lhs.span,
+            "not a constraint",
+            "constraints are `distance(a, b) >= D m` and `distance(a, b) <= D m`",
+        );
         return None;
     };
     if name.value != "distance" {
@@ -403,7 +445,13 @@ fn require(lhs: &Expr, at_least: bool, rhs: &Expr, s: &Scenario, r: &mut Reader<
         return None;
     }
     if args.len() != 2 {
-        r.error(Code::Arguments, format!("`distance` takes 2 arguments, found {}", args.len()), lhs.span, "here");
+        r.error_help(
+            Code::Arguments,
+            format!("`distance` takes 2 arguments, found {}", args.len()),
+            lhs.span,
+            "wrong number of arguments",
+            "write `distance(a, b)` with a and b the ball, `left[i]`, `right[i]` or `left.ROLE`",
+        );
         return None;
     }
     let a = body(&args[0].value, s, r);
@@ -427,7 +475,13 @@ fn body(e: &Expr, s: &Scenario, r: &mut Reader<'_>) -> Option<Body> {
         ExprKind::Index { name, args } if team_of(&name.value).is_some() => {
             let (team, left) = team_of(&name.value)?;
             let [arg] = args.as_slice() else {
-                r.error(Code::Arguments, "a player index is one number", e.span, "here");
+                r.error_help(
+                    Code::Arguments,
+                    "a player index is one number",
+                    e.span,
+                    "not one index",
+                    format!("write `{}[i]`, i counting from 0 in the team's order", name.value),
+                );
                 return None;
             };
             let i = r.steps(&arg.value, "a player index", 0)? as usize;

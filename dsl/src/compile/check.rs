@@ -5,6 +5,7 @@ use touchline_engine::scenario::{MAX_PLACEMENT_TRIES, Spot};
 use touchline_engine::{MAX_PLAYERS_PER_TEAM, Role, Scenario};
 
 use super::body::{Loc, Origins};
+use super::value::short;
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Source};
 use crate::syntax::Span;
 
@@ -25,13 +26,16 @@ pub(super) fn check(s: &Scenario, o: &Origins, source: &Source, name_span: Span,
             Some(l) => Diagnostic::new(code, message, &l.source, l.span, label),
             None => at_name(code, message, label),
         };
-        if team.is_empty() {
+        if o.team_errors[i] {
+            // The team statement already has errors and its players are incomplete: counting them
+            // would only repeat those errors.
+        } else if team.is_empty() {
             diags.push(at_team(Code::PlayerCount, format!("the {side} team has no players"), "no players").with_help(
                 format!("add `team {side} {{ GK at (-1, 0) … }}`, a formation, or extend a scenario that has one"),
             ));
             continue;
         }
-        if team.len() > MAX_PLAYERS_PER_TEAM {
+        if team.len() > MAX_PLAYERS_PER_TEAM && !o.team_errors[i] {
             let d = match o.players[i].get(MAX_PLAYERS_PER_TEAM) {
                 Some(l) => Diagnostic::new(
                     Code::PlayerCount,
@@ -50,6 +54,7 @@ pub(super) fn check(s: &Scenario, o: &Origins, source: &Source, name_span: Span,
         }
         let keepers: Vec<usize> = team.iter().enumerate().filter(|(_, p)| p.role == Role::GK).map(|(k, _)| k).collect();
         match keepers.as_slice() {
+            _ if o.team_errors[i] => {}
             [_] => {}
             [] => diags.push(
                 at_team(Code::Goalkeepers, format!("the {side} team has no goalkeeper"), "no GK")
@@ -101,37 +106,84 @@ pub(super) fn check(s: &Scenario, o: &Origins, source: &Source, name_span: Span,
         );
     }
     if !s.requires.is_empty() {
-        let acceptance = s.require_acceptance(ACCEPTANCE_SAMPLES);
-        let failure = (1.0 - f64::from(acceptance)).powi(MAX_PLACEMENT_TRIES as i32);
-        if acceptance == 0.0 {
-            diags.push(
-                at_name(
-                    Code::Unsatisfiable,
-                    format!("the `require` constraints never held in {ACCEPTANCE_SAMPLES} draws"),
-                    "cannot be placed",
-                )
-                .with_help("widen the distributions or relax the distances; a fixed placement that breaks a constraint can never hold"),
-            );
-        } else if failure > MAX_FAILURE {
-            diags.push(
-                at_name(
-                    Code::Unsatisfiable,
-                    format!(
-                        "the `require` constraints hold in only {:.2}% of draws: a reset may run out of its {MAX_PLACEMENT_TRIES} tries",
-                        100.0 * acceptance
-                    ),
-                    "too rarely placeable",
-                )
-                .with_help("relax the constraints so that at least ~2% of draws meet them"),
-            );
-        }
+        requires(s, o, &at_name, diags);
     }
     if !s.left_team.iter().any(|p| p.controllable) {
-        diags.push(
-            at_name(Code::NoControllable, "no left player is controllable".into(), "agents cannot play this side")
-                .with_help("remove `not controllable` from a left player, unless only the built-in AI plays"),
-        );
+        let d = match &o.team[0] {
+            Some(l) => Diagnostic::new(
+                Code::NoControllable,
+                "no left player is controllable",
+                &l.source,
+                l.span,
+                "agents cannot play this side",
+            ),
+            None => {
+                at_name(Code::NoControllable, "no left player is controllable".into(), "agents cannot play this side")
+            }
+        };
+        diags.push(d.with_help("remove `not controllable` from a left player, unless only the built-in AI plays"));
     }
+}
+
+/// `tl::E113` when the `require` constraints never hold, or too rarely for the retry budget,
+/// labelled on the constraints to blame: those that fail on their own, or else all of them.
+fn requires(s: &Scenario, o: &Origins, at_name: &dyn Fn(Code, String, &str) -> Diagnostic, diags: &mut Diagnostics) {
+    let acceptance = s.require_acceptance(ACCEPTANCE_SAMPLES);
+    let failure = (1.0 - f64::from(acceptance)).powi(MAX_PLACEMENT_TRIES as i32);
+    if acceptance > 0.0 && failure <= MAX_FAILURE {
+        return;
+    }
+    // How often each constraint holds on its own.
+    let alone: Vec<f32> = s
+        .requires
+        .iter()
+        .map(|r| Scenario { requires: vec![r.clone()], ..s.clone() }.require_acceptance(ACCEPTANCE_SAMPLES))
+        .collect();
+    let percent = |a: f32| format!("{:.2}%", 100.0 * a);
+    let (message, label, help) = if acceptance == 0.0 {
+        (
+            format!("the `require` constraints never held in {ACCEPTANCE_SAMPLES} draws"),
+            "never holds",
+            "widen the distributions or relax the distances; between fixed positions a constraint either always or never holds",
+        )
+    } else {
+        (
+            format!(
+                "the `require` constraints hold in only {} of draws: a reset may run out of its {MAX_PLACEMENT_TRIES} tries",
+                percent(acceptance)
+            ),
+            "rarely holds",
+            "relax the constraints or narrow the distributions so that at least ~2% of draws meet them",
+        )
+    };
+    // Blame the constraints that fail (or are too rare) on their own; if each is fine alone, they
+    // fail together, and all are labelled with how often each holds alone.
+    let too_rare = |a: f32| a == 0.0 || (1.0 - f64::from(a)).powi(MAX_PLACEMENT_TRIES as i32) > MAX_FAILURE;
+    let failing: Vec<usize> = (0..s.requires.len())
+        .filter(|&k| if acceptance == 0.0 { alone[k] == 0.0 } else { too_rare(alone[k]) })
+        .collect();
+    let together = failing.is_empty();
+    let blamed: Vec<usize> = if together { (0..s.requires.len()).collect() } else { failing };
+    let locs: Vec<&Loc> = blamed.iter().filter_map(|&k| o.requires.get(k)).collect();
+    let Some(first) = locs.first() else {
+        diags.push(at_name(Code::Unsatisfiable, message, label).with_help(help));
+        return;
+    };
+    let label_of = |k: usize| {
+        if together { format!("holds in {} of draws on its own", percent(alone[k])) } else { label.to_owned() }
+    };
+    let help = if together && s.requires.len() > 1 {
+        "each constraint holds on its own but not together with the others: relax one of them"
+    } else {
+        help
+    };
+    let mut d = Diagnostic::new(Code::Unsatisfiable, message, &first.source, first.span, label_of(blamed[0]));
+    for (&k, l) in blamed.iter().zip(&locs).skip(1) {
+        if std::sync::Arc::ptr_eq(&l.source, &first.source) {
+            d = d.with_label(l.span, label_of(k));
+        }
+    }
+    diags.push(d.with_help(help));
 }
 
 /// Errors for a position box outside the rim, a warning outside the lines.
@@ -142,16 +194,22 @@ fn position(bounds: [[f32; 2]; 2], what: &str, loc: &Loc, diags: &mut Diagnostic
             || x0.abs().max(x1.abs()) > limit[0]
             || y0.abs().max(y1.abs()) > limit[1]
     };
-    let place = if x0 == x1 && y0 == y1 { format!("({x0}, {y0})") } else { format!("({x0}..{x1}, {y0}..{y1})") };
+    let [x0s, x1s, y0s, y1s] = [x0, x1, y0, y1].map(short);
+    // A random start is judged by the whole range its draws can reach.
+    let (starts, place) = if x0 == x1 && y0 == y1 {
+        ("starts", format!("at ({x0s}, {y0s})"))
+    } else {
+        ("can start", format!("(its draws reach {x0s}..{x1s}, {y0s}..{y1s})"))
+    };
     if beyond(RIM) {
         diags.push(
-            Diagnostic::new(Code::OutOfRange, format!("{what} starts off the pitch at {place}"), &loc.source, loc.span, "off the pitch")
+            Diagnostic::new(Code::OutOfRange, format!("{what} {starts} off the pitch {place}"), &loc.source, loc.span, "off the pitch")
                 .with_help("positions are in scenario units: x in [-1, 1] (goal lines), y in [-0.42, 0.42] (touchlines); the rim allows |x| <= 1.1, |y| <= 0.48"),
         );
     } else if beyond(LINES) {
         diags.push(Diagnostic::new(
             Code::OutsideLines,
-            format!("{what} starts outside the lines at {place}"),
+            format!("{what} {starts} outside the lines {place}"),
             &loc.source,
             loc.span,
             "outside the lines",

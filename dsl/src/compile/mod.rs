@@ -238,7 +238,7 @@ impl Compiler {
                 Err(e) => self.diags.push(
                     Diagnostic::new(
                         Code::MissingImport,
-                        format!("cannot import `{}`: {e}", import.value),
+                        format!("cannot import `{}`: {}", import.value, io_reason(&e)),
                         &source,
                         import.span,
                         "not found",
@@ -281,7 +281,8 @@ impl Compiler {
                     span,
                     "again here",
                 )
-                .with_label(first, "first defined here"),
+                .with_label(first, "first defined here")
+                .with_help("rename one of them: `extends` finds definitions by name"),
             );
         }
     }
@@ -416,6 +417,17 @@ impl Compiler {
                 }
             }
         }
+    }
+}
+
+/// Why a file cannot be read, in words that do not depend on the platform for the common cases.
+fn io_reason(e: &std::io::Error) -> String {
+    match e.kind() {
+        std::io::ErrorKind::NotFound => "no such file".to_owned(),
+        std::io::ErrorKind::PermissionDenied => "permission denied".to_owned(),
+        std::io::ErrorKind::InvalidData => "the file is not UTF-8 text".to_owned(),
+        std::io::ErrorKind::IsADirectory => "it is a directory".to_owned(),
+        _ => e.to_string(),
     }
 }
 

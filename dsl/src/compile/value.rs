@@ -42,10 +42,6 @@ pub(crate) struct Reader<'a> {
 }
 
 impl Reader<'_> {
-    pub(crate) fn error(&mut self, code: Code, message: impl Into<String>, span: Span, label: impl Into<String>) {
-        self.diags.push(Diagnostic::new(code, message, self.source, span, label));
-    }
-
     pub(crate) fn error_help(
         &mut self,
         code: Code,
@@ -57,8 +53,15 @@ impl Reader<'_> {
         self.diags.push(Diagnostic::new(code, message, self.source, span, label).with_help(help));
     }
 
-    fn wrong_type(&mut self, expected: &str, e: &Expr) {
-        self.error(Code::WrongType, format!("expected {expected}, found {}", e.describe()), e.span, "here");
+    /// `tl::E105` "expected …, found …" with `help` saying what to write.
+    fn wrong_type(&mut self, expected: &str, e: &Expr, help: &str) {
+        self.error_help(
+            Code::WrongType,
+            format!("expected {expected}, found {}", e.describe()),
+            e.span,
+            format!("not {expected}"),
+            help,
+        );
     }
 
     /// `true` or `false`.
@@ -67,7 +70,7 @@ impl Reader<'_> {
             ExprKind::Path { head, field: None } if head.value == "true" => Some(true),
             ExprKind::Path { head, field: None } if head.value == "false" => Some(false),
             _ => {
-                self.wrong_type("`true` or `false`", e);
+                self.wrong_type("`true` or `false`", e, "write `true` or `false`");
                 None
             }
         }
@@ -88,7 +91,7 @@ impl Reader<'_> {
                 None
             }
             _ => {
-                self.wrong_type(&format!("a number ({what})"), e);
+                self.wrong_type(&format!("a number ({what})"), e, "write a plain number, e.g. `0.5`");
                 None
             }
         }
@@ -98,7 +101,13 @@ impl Reader<'_> {
     pub(crate) fn fraction(&mut self, e: &Expr, what: &str) -> Option<f32> {
         let v = self.plain_number(e, what)?;
         if !(0.0..=1.0).contains(&v) {
-            self.error(Code::OutOfRange, format!("{what} must be in [0, 1], found {v}"), e.span, "out of range");
+            self.error_help(
+                Code::OutOfRange,
+                format!("{what} must be in [0, 1], found {v}"),
+                e.span,
+                "out of range",
+                "a difficulty θ runs from 0 (weakest built-in AI) to 1 (strongest)",
+            );
             return None;
         }
         Some(v as f32)
@@ -120,16 +129,21 @@ impl Reader<'_> {
                 return None;
             }
             _ => {
-                self.wrong_type(&format!("a number of steps ({what})"), e);
+                self.wrong_type(
+                    &format!("a number of steps ({what})"),
+                    e,
+                    "write a whole number, e.g. `400` or `400 steps`",
+                );
                 return None;
             }
         };
         if value.fract() != 0.0 || value < f64::from(min) || value > f64::from(u32::MAX) {
-            self.error(
+            self.error_help(
                 Code::OutOfRange,
-                format!("{what} must be a whole number of steps >= {min}, found {value}"),
+                format!("{what} must be a whole number >= {min}, found {value}"),
                 e.span,
                 "out of range",
+                format!("write a whole number from {min} to {}", u32::MAX),
             );
             return None;
         }
@@ -141,7 +155,13 @@ impl Reader<'_> {
         match &e.kind {
             ExprKind::Quantity { value, unit: Some(u), .. } if u.value == "m" && *value >= 0.0 => Some(*value as f32),
             ExprKind::Quantity { value, unit: Some(u), .. } if u.value == "m" => {
-                self.error(Code::OutOfRange, format!("a distance cannot be negative ({value} m)"), e.span, "negative");
+                self.error_help(
+                    Code::OutOfRange,
+                    format!("a distance cannot be negative ({value} m)"),
+                    e.span,
+                    "negative",
+                    "write a distance of 0 m or more",
+                );
                 None
             }
             ExprKind::Quantity { unit, .. } => {
@@ -156,7 +176,7 @@ impl Reader<'_> {
                 None
             }
             _ => {
-                self.wrong_type("a distance in metres", e);
+                self.wrong_type("a distance in metres", e, "write metres, e.g. `5 m`");
                 None
             }
         }
@@ -180,7 +200,11 @@ impl Reader<'_> {
                 None
             }
             _ => {
-                self.wrong_type("a number", e);
+                self.wrong_type(
+                    "a number",
+                    e,
+                    "write a plain number (x in [-1, 1], y in [-0.42, 0.42]) or metres, e.g. `10 m`",
+                );
                 None
             }
         }
@@ -227,22 +251,24 @@ impl Reader<'_> {
                 let (a, b) = (a?, b?);
                 let d = if name.value == "uniform" {
                     if a > b {
-                        self.error(
+                        self.error_help(
                             Code::OutOfRange,
-                            format!("uniform({a}, {b}) has low > high"),
+                            format!("uniform({}, {}) has low > high", short(a), short(b)),
                             e.span,
                             "empty range",
+                            format!("write the smaller bound first: `uniform({}, {})`", short(b), short(a)),
                         );
                         return None;
                     }
                     Distribution::Uniform(a, b)
                 } else {
                     if b < 0.0 {
-                        self.error(
+                        self.error_help(
                             Code::OutOfRange,
                             "a standard deviation cannot be negative",
                             args[1].value.span,
                             "negative",
+                            "write `normal(mean, std)` with std >= 0",
                         );
                         return None;
                     }
@@ -252,7 +278,13 @@ impl Reader<'_> {
             }
             ExprKind::Index { name, args } if name.value == "choice" => {
                 if args.is_empty() {
-                    self.error(Code::Arguments, "`choice` needs at least one value", e.span, "empty choice");
+                    self.error_help(
+                        Code::Arguments,
+                        "`choice` needs at least one value",
+                        e.span,
+                        "empty choice",
+                        "write `choice[v1, v2, …]`",
+                    );
                     return None;
                 }
                 let values: Vec<Option<f32>> = args.iter().map(|a| self.coordinate(&a.value, frame, axis)).collect();
@@ -265,11 +297,11 @@ impl Reader<'_> {
     /// A fixed point `(x, y)`.
     fn fixed_point(&mut self, e: &Expr, frame: Frame) -> Option<[f32; 2]> {
         let ExprKind::Tuple(args) = &e.kind else {
-            self.wrong_type("a point `(x, y)`", e);
+            self.wrong_type("a point `(x, y)`", e, "write a point as `(x, y)`");
             return None;
         };
         if args.len() != 2 {
-            self.error(Code::Arguments, format!("a point has 2 coordinates, found {}", args.len()), e.span, "here");
+            self.point_arity(e, args.len());
             return None;
         }
         let x = self.coordinate(&args[0].value, frame, Axis::X);
@@ -306,11 +338,12 @@ impl Reader<'_> {
                 let r = self.coordinate(&args[2].value, frame, Axis::X);
                 let (x, y, r) = (x?, y?, r?);
                 if r <= 0.0 {
-                    self.error(
+                    self.error_help(
                         Code::OutOfRange,
                         "a circle's radius must be positive",
                         args[2].value.span,
                         "not positive",
+                        "write `circle(x, y, r)` with r > 0",
                     );
                     return None;
                 }
@@ -340,7 +373,11 @@ impl Reader<'_> {
                 None
             }
             _ => {
-                self.wrong_type("a region", e);
+                self.wrong_type(
+                    "a region",
+                    e,
+                    "write a named region (penalty_area, …), circle(x, y, r) or rect((x0, y0), (x1, y1))",
+                );
                 None
             }
         }
@@ -368,18 +405,52 @@ impl Reader<'_> {
                         args.iter().map(|a| self.fixed_point(&a.value, frame)).collect();
                     let points = points.into_iter().collect::<Option<Vec<_>>>()?;
                     let Some(&first) = points.first() else {
-                        self.error(Code::Arguments, "`choice` needs at least one point", e.span, "empty choice");
+                        self.error_help(
+                            Code::Arguments,
+                            "`choice` needs at least one point",
+                            e.span,
+                            "empty choice",
+                            "write `choice[(x1, y1), (x2, y2), …]`",
+                        );
                         return None;
                     };
                     Some((first, Some(Spot::OneOf(points))))
                 }
+                ExprKind::Tuple(args) => {
+                    self.point_arity(e, args.len());
+                    None
+                }
                 _ => {
-                    self.wrong_type("a point `(x, y)` or `choice[(x, y), …]`", e);
+                    self.wrong_type(
+                        "a point `(x, y)` or `choice[(x, y), …]`",
+                        e,
+                        "write `at (x, y)`, `at choice[(x1, y1), (x2, y2)]` or `in REGION`",
+                    );
                     None
                 }
             },
         }
     }
+}
+
+impl Reader<'_> {
+    /// `tl::E117` for a point with `n` ≠ 2 coordinates.
+    fn point_arity(&mut self, e: &Expr, n: usize) {
+        self.error_help(
+            Code::Arguments,
+            format!("a point has 2 coordinates, found {n}"),
+            e.span,
+            "not (x, y)",
+            "write a point as `(x, y)`: positions are on the ground, so there is no height",
+        );
+    }
+}
+
+/// A number for messages: at most 4 decimals, without trailing zeros (`0.1`, not `0.099999994`).
+pub(crate) fn short(v: f32) -> String {
+    let text = format!("{v:.4}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" { "0".to_owned() } else { text.to_owned() }
 }
 
 /// "did you mean …?" for the close names, or `otherwise`.

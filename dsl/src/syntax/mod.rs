@@ -42,36 +42,128 @@ pub fn parse(source: &Source) -> Result<File, Box<Diagnostic>> {
     Ok(file)
 }
 
+/// Words that begin a statement; one met where a player's role was read means that the team
+/// block above lacks its `}`.
+const STATEMENT_KEYWORDS: [&str; 9] = ["team", "ball", "extends", "require", "reward", "end", "on", "start", "import"];
+
 fn syntax_error(e: pest::error::Error<Rule>, source: &Source) -> Diagnostic {
-    let e = e.renamed_rules(rule_name);
     let (start, end) = match e.location {
         pest::error::InputLocation::Pos(p) => (p, p),
         pest::error::InputLocation::Span((a, b)) => (a, b),
     };
     let text = source.inner().as_str();
+    if let Some(d) = unterminated_string(text, start, source).or_else(|| missing_brace(&e, text, start, source)) {
+        return d;
+    }
     // Point at the offending token (up to the next space) rather than at a zero-width gap.
     let end = if end > start {
         end
     } else {
         start + text[start..].find(|c: char| c.is_whitespace()).unwrap_or(text.len() - start).max(1)
     };
-    let end = end.min(text.len());
+    let end = floor_char_boundary(text, end.min(text.len()));
     let found = text.get(start..end).filter(|s| !s.is_empty()).unwrap_or("end of file");
-    let expected = match &e.variant {
-        pest::error::ErrorVariant::ParsingError { positives, .. } if !positives.is_empty() => {
-            let names: Vec<String> = positives.iter().map(rule_name).collect();
-            format!("expected {}", join_or(&names))
+    let mut expected: Vec<String> = Vec::new();
+    if let pest::error::ErrorVariant::ParsingError { positives, .. } = &e.variant {
+        // Comments may come anywhere, so "a comment" is always possible and never worth saying.
+        for name in positives.iter().filter(|r| !matches!(r, Rule::COMMENT | Rule::WHITESPACE)).map(rule_name) {
+            if !expected.contains(&name) {
+                expected.push(name);
+            }
         }
-        variant => variant.message().into_owned(),
+    }
+    if expected.is_empty() {
+        expected = expected_literals(text);
+    }
+    let message = if expected.is_empty() {
+        format!("syntax error: unexpected `{found}`")
+    } else {
+        format!("syntax error: expected {}", join_or(&expected))
     };
-    Diagnostic::new(
-        Code::Syntax,
-        format!("syntax error: {expected}"),
-        source,
-        Span { start, end },
-        format!("found `{found}`"),
+    Diagnostic::new(Code::Syntax, message, source, Span { start, end }, format!("found `{found}`"))
+        .with_help("see grammar/README.md for the statements a scenario may contain")
+}
+
+/// The largest char boundary at or before `i`.
+fn floor_char_boundary(text: &str, mut i: usize) -> usize {
+    while !text.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+/// The punctuation the parser expected at the error (`)`, `,`, …): pest names only rules in its
+/// error, so the text is parsed again with pest's detailed error tracking.
+fn expected_literals(text: &str) -> Vec<String> {
+    // Tracking stays on once switched on: switching it off could race with another thread's
+    // re-parse and make its message depend on timing.
+    pest::set_error_detail(true);
+    let Err(e) = ScenarioParser::parse(Rule::file, text) else { return Vec::new() };
+    let Some(attempts) = e.parse_attempts() else { return Vec::new() };
+    attempts
+        .expected_tokens()
+        .into_iter()
+        // Only literal text (not character ranges such as `a..z`), without whitespace and `//`.
+        .filter(|t| format!("{t:?}").starts_with("Sensitive"))
+        .map(|t| t.to_string())
+        .filter(|t| !t.trim().is_empty() && t != "//")
+        .map(|t| format!("`{t}`"))
+        .collect()
+}
+
+/// A string opened on the line of the error and never closed.
+fn unterminated_string(text: &str, at: usize, source: &Source) -> Option<Diagnostic> {
+    let line_start = text[..at].rfind('\n').map_or(0, |i| i + 1);
+    let line_end = text[at..].find('\n').map_or(text.len(), |i| at + i);
+    let line = &text[line_start..line_end];
+    // Quotes before the error on this line, outside comments.
+    let before = &text[line_start..at];
+    let before = before.split("//").next().unwrap_or(before);
+    let opening = if before.matches('"').count() % 2 == 1 {
+        line_start + before.rfind('"')?
+    } else if text[at..line_end].starts_with('"') && !text[at + 1..line_end].contains('"') {
+        at
+    } else {
+        return None;
+    };
+    if text[opening + 1..line_end].contains('"') || line.trim_start().starts_with("//") {
+        return None;
+    }
+    let end = opening + text[opening..line_end].trim_end().len();
+    Some(
+        Diagnostic::new(
+            Code::Syntax,
+            "syntax error: unterminated string",
+            source,
+            Span { start: opening, end },
+            "this string has no closing `\"`",
+        )
+        .with_help("a string ends with `\"` on the line it starts on"),
     )
-    .with_help("see grammar/README.md for the statements a scenario may contain")
+}
+
+/// A statement keyword read as a player's role: the team block before it is not closed.
+fn missing_brace(e: &pest::error::Error<Rule>, text: &str, at: usize, source: &Source) -> Option<Diagnostic> {
+    let pest::error::ErrorVariant::ParsingError { positives, .. } = &e.variant else { return None };
+    if !positives.contains(&Rule::place) {
+        return None;
+    }
+    let before = text[..at].trim_end();
+    let word_start = before.rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).map_or(0, |i| i + 1);
+    let word = &before[word_start..];
+    if !STATEMENT_KEYWORDS.contains(&word) {
+        return None;
+    }
+    Some(
+        Diagnostic::new(
+            Code::Syntax,
+            format!("syntax error: `{word}` inside a team block"),
+            source,
+            Span { start: word_start, end: before.len() },
+            "read as a player, but it starts a statement",
+        )
+        .with_help(format!("a `}}` closing the team block is missing before `{word}`")),
+    )
 }
 
 fn join_or(names: &[String]) -> String {
@@ -118,9 +210,26 @@ fn rule_name(rule: &Rule) -> String {
     .to_owned()
 }
 
+/// The pair's span without trailing whitespace and comments: pest gives a pair that ends in an
+/// optional or repeated part (`flag*`) the spaces after it, but a label should end on its last
+/// token.
 fn span_of(pair: &Pair<'_, Rule>) -> Span {
     let s = pair.as_span();
-    Span { start: s.start(), end: s.end() }
+    let (start, text) = (s.start(), s.as_str());
+    let mut end = start + text.trim_end().len();
+    if text[..end - start].rsplit('\n').next().is_some_and(|line| line.contains("//")) {
+        let comments: Vec<(usize, usize)> = pair
+            .clone()
+            .into_inner()
+            .flatten()
+            .filter(|p| p.as_rule() == Rule::COMMENT)
+            .map(|p| (p.as_span().start(), p.as_span().start() + p.as_str().trim_end().len()))
+            .collect();
+        while let Some(&(c, _)) = comments.iter().find(|&&(c, c_end)| c_end == end && c > start) {
+            end = start + text[..c - start].trim_end().len();
+        }
+    }
+    Span { start, end }
 }
 
 fn spanned<T>(pair: &Pair<'_, Rule>, value: T) -> Spanned<T> {

@@ -145,6 +145,7 @@ fixtures! {
     outside_lines
     no_controllable
     unused_import
+    no_effect_key
 }
 
 #[test]

@@ -152,7 +152,7 @@ fn start_from(path: &syntax::Spanned<String>, s: &mut Scenario, r: &mut Reader<'
         Ok(bytes) => s.start_state = Some(bytes),
         Err(e) => r.error_help(
             Code::StartState,
-            format!("cannot read the saved state `{}`: {e}", path.value),
+            format!("cannot read the saved state `{}`: {}", path.value, super::io_reason(&e)),
             path.span,
             "not readable",
             format!(

@@ -421,7 +421,7 @@ impl Compiler {
 }
 
 /// Why a file cannot be read, in words that do not depend on the platform for the common cases.
-fn io_reason(e: &std::io::Error) -> String {
+pub(crate) fn io_reason(e: &std::io::Error) -> String {
     match e.kind() {
         std::io::ErrorKind::NotFound => "no such file".to_owned(),
         std::io::ErrorKind::PermissionDenied => "permission denied".to_owned(),

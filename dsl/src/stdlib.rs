@@ -1,39 +1,11 @@
-//! The shipped scenarios (`stdlib-scenarios/*.json`), embedded at compile time.
+//! The shipped scenarios (`stdlib-scenarios/*.tl`), embedded at compile time.
 //!
-//! One scenario per top-level scenario of Google Research Football (shared/reference/grf.md §2.1,
-//! tables in §2.3 and §2.4), in compiled form: a [`Scenario`] serialised as pretty-printed JSON.
-//! Every embedded file is tested to parse, validate and be in canonical form.
+//! One scenario per scenario of Google Research Football (shared/reference/grf.md §2.1, tables in
+//! §2.3 and §2.4): the 19 top-level ones and the 16 `tests/…` ones, as `.tl` sources compiled on
+//! load. Each compiles, without warnings, to exactly the golden compiled JSON checked in beside it
+//! (`dsl/tests/golden.rs`).
 
 use touchline_engine::Scenario;
-
-/// `(name, compiled JSON)` for every stdlib scenario, sorted by name.
-const SCENARIOS: &[(&str, &str)] = &[
-    ("11_vs_11_competition", include_str!("../../stdlib-scenarios/11_vs_11_competition.json")),
-    ("11_vs_11_easy_stochastic", include_str!("../../stdlib-scenarios/11_vs_11_easy_stochastic.json")),
-    ("11_vs_11_hard_stochastic", include_str!("../../stdlib-scenarios/11_vs_11_hard_stochastic.json")),
-    ("11_vs_11_kaggle", include_str!("../../stdlib-scenarios/11_vs_11_kaggle.json")),
-    ("11_vs_11_stochastic", include_str!("../../stdlib-scenarios/11_vs_11_stochastic.json")),
-    ("1_vs_1_easy", include_str!("../../stdlib-scenarios/1_vs_1_easy.json")),
-    ("5_vs_5", include_str!("../../stdlib-scenarios/5_vs_5.json")),
-    ("academy_3_vs_1_with_keeper", include_str!("../../stdlib-scenarios/academy_3_vs_1_with_keeper.json")),
-    ("academy_corner", include_str!("../../stdlib-scenarios/academy_corner.json")),
-    ("academy_counterattack_easy", include_str!("../../stdlib-scenarios/academy_counterattack_easy.json")),
-    ("academy_counterattack_hard", include_str!("../../stdlib-scenarios/academy_counterattack_hard.json")),
-    ("academy_empty_goal", include_str!("../../stdlib-scenarios/academy_empty_goal.json")),
-    ("academy_empty_goal_close", include_str!("../../stdlib-scenarios/academy_empty_goal_close.json")),
-    (
-        "academy_pass_and_shoot_with_keeper",
-        include_str!("../../stdlib-scenarios/academy_pass_and_shoot_with_keeper.json"),
-    ),
-    (
-        "academy_run_pass_and_shoot_with_keeper",
-        include_str!("../../stdlib-scenarios/academy_run_pass_and_shoot_with_keeper.json"),
-    ),
-    ("academy_run_to_score", include_str!("../../stdlib-scenarios/academy_run_to_score.json")),
-    ("academy_run_to_score_with_keeper", include_str!("../../stdlib-scenarios/academy_run_to_score_with_keeper.json")),
-    ("academy_single_goal_versus_lazy", include_str!("../../stdlib-scenarios/academy_single_goal_versus_lazy.json")),
-    ("test_example_multiagent", include_str!("../../stdlib-scenarios/test_example_multiagent.json")),
-];
 
 /// `.tl` sources of the stdlib, by name (sorted in byte order); `tests/…` are GRF's test scenarios.
 const TL_SOURCES: &[(&str, &str)] = &[
@@ -125,22 +97,19 @@ pub fn test_names() -> impl Iterator<Item = &'static str> {
     TL_SOURCES.iter().map(|(n, _)| *n).filter(|n| n.starts_with("tests/"))
 }
 
-/// The compiled JSON text of the stdlib scenario `name`, or `None` if there is no such scenario.
-pub fn source(name: &str) -> Option<&'static str> {
-    SCENARIOS.binary_search_by(|(n, _)| (*n).cmp(name)).ok().map(|i| SCENARIOS[i].1)
-}
-
 /// The `.tl` source of the stdlib scenario `name`, or `None` if there is no such scenario.
 pub fn tl_source(name: &str) -> Option<&'static str> {
     TL_SOURCES.binary_search_by(|(n, _)| (*n).cmp(name)).ok().map(|i| TL_SOURCES[i].1)
 }
 
-/// The stdlib scenario `name`, parsed; `None` if there is no such scenario.
+/// The stdlib scenario `name` (a top-level or a `tests/…` name), compiled; `None` if there is no
+/// such scenario.
 ///
-/// The embedded files are tested to parse and to pass [`Scenario::validate`], so a known name
-/// always gives `Some`. Use [`crate::load`] to get a [`crate::LoadError`] for unknown names.
+/// The embedded sources are tested to compile without warnings, so a known name always gives
+/// `Some`. Use [`crate::load`] to get a [`crate::LoadError`] for unknown names.
 pub fn scenario(name: &str) -> Option<Scenario> {
-    source(name).and_then(|text| serde_json::from_str(text).ok())
+    let text = tl_source(name)?;
+    crate::compile(text, &format!("stdlib/{name}.tl")).ok().map(|c| c.scenario)
 }
 
 #[cfg(test)]
@@ -150,14 +119,16 @@ mod tests {
     #[test]
     fn tables_are_sorted_and_agree() {
         assert!(NAMES.windows(2).all(|w| w[0] < w[1]));
-        let from_table: Vec<&str> = SCENARIOS.iter().map(|(n, _)| *n).collect();
+        let from_table: Vec<&str> = TL_SOURCES.iter().map(|(n, _)| *n).filter(|n| !n.starts_with("tests/")).collect();
         assert_eq!(from_table, NAMES);
+        assert!(TL_SOURCES.windows(2).all(|w| w[0].0 < w[1].0));
     }
 
     #[test]
     fn lookup() {
-        assert!(source("academy_corner").is_some());
-        assert!(source("academy_cornerr").is_none());
+        assert!(tl_source("academy_corner").is_some());
+        assert!(tl_source("tests/penalty").is_some());
+        assert!(tl_source("academy_cornerr").is_none());
         assert_eq!(scenario("5_vs_5").map(|s| s.left_team.len()), Some(5));
         assert!(scenario("").is_none());
     }

@@ -44,8 +44,8 @@ const TWO_KEEPERS: &str = r#"{
 
 #[test]
 fn json_file_loads() {
-    let text = touchline_dsl::stdlib::source("academy_corner").unwrap();
-    let file = TempFile::new("corner.json", text);
+    let text = serde_json::to_string_pretty(&touchline_dsl::load("academy_corner").unwrap()).unwrap();
+    let file = TempFile::new("corner.json", &text);
     let s = load(file.spec()).unwrap();
     assert_eq!(s, touchline_dsl::stdlib::scenario("academy_corner").unwrap());
     assert_eq!(load_file(&file.0).unwrap(), s);

@@ -58,6 +58,25 @@ pub fn load_file(path: &Path) -> Result<Scenario, LoadError> {
 /// - `tl::E003` [`LoadError::Json`]: bad JSON or the wrong shape, pointing at the line and column;
 /// - `tl::E004` [`LoadError::Invalid`]: the scenario fails [`Scenario::validate`].
 pub fn load_json(text: &str, origin: &str) -> Result<Scenario, LoadError> {
+    // The version first: a newer file may hold fields this version does not know, and "unknown
+    // field" would hide the real reason.
+    #[derive(serde::Deserialize)]
+    struct Version {
+        #[serde(default)]
+        format_version: u32,
+    }
+    if let Ok(Version { format_version }) = serde_json::from_str::<Version>(text)
+        && format_version > touchline_engine::SCENARIO_FORMAT_VERSION
+    {
+        let reason = format!(
+            "it was compiled by a newer touchline (format_version {format_version}); this one reads version {}",
+            touchline_engine::SCENARIO_FORMAT_VERSION
+        );
+        return Err(LoadError::Invalid {
+            origin: origin.to_owned(),
+            source: touchline_engine::EngineError::InvalidScenario { reason },
+        });
+    }
     let scenario: Scenario = serde_json::from_str(text).map_err(|e| LoadError::from_json(&e, text, origin))?;
     scenario.validate().map_err(|source| LoadError::Invalid { origin: origin.to_owned(), source })?;
     Ok(scenario)

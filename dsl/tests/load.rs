@@ -179,3 +179,13 @@ fn codes_are_stable() {
         assert_eq!(err.code_str(), code(err));
     }
 }
+
+#[test]
+fn a_newer_format_version_is_refused_by_name() {
+    let err = load_json(r#"{"format_version": 2, "a_field_from_the_future": true}"#, "future.json").unwrap_err();
+    assert_eq!(code(&err), "tl::E004");
+    let text = render_plain(&err);
+    let words: Vec<&str> = text.split_whitespace().filter(|w| *w != "│").collect();
+    let flat = words.join(" ");
+    assert!(flat.contains("format_version 2") && flat.contains("reads version 1"), "{text}");
+}

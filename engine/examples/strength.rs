@@ -70,6 +70,15 @@ fn main() {
         let (mut fouls, mut cards, mut offsides, mut corners, mut throws) = (0.0, 0.0, 0.0, 0.0, 0.0);
         for seed in 0..matches {
             let s = play(left, right, seed);
+            if std::env::var_os("STRENGTH_VERBOSE").is_some() {
+                let [l, r] = s.teams;
+                println!(
+                    "  seed {seed}: {}-{}, possession {:.1} %",
+                    l.goals,
+                    r.goals,
+                    s.possession_percent(touchline_engine::Side::Left)
+                );
+            }
             let [l, r] = s.teams;
             diffs.push(f64::from(l.goals) - f64::from(r.goals));
             goals += f64::from(l.goals + r.goals);

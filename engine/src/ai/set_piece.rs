@@ -6,7 +6,7 @@ use glam::Vec2;
 
 use super::{Analysis, Difficulty, MatchView, Plan, goalkeeper, team_shape};
 use crate::game::{GameMode, Kick, KickKind, KickTarget};
-use crate::geometry::pitch::HALF_LENGTH;
+use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
 use crate::player::{WALK_SPEED, nearest_distance};
 use crate::rng::MatchRng;
 
@@ -81,7 +81,11 @@ fn take(view: &MatchView, g: usize, analysis: &Analysis, rng: &mut MatchRng) -> 
                     (m.position, free.min(10.0) - 0.15 * d)
                 })
                 .max_by(|a, b| a.1.total_cmp(&b.1));
-            let target = best.map_or(me.position + frame.vec2(Vec2::new(15.0, 0.0)), |b| b.0);
+            let mut target = best.map_or(me.position + frame.vec2(Vec2::new(15.0, 0.0)), |b| b.0);
+            if view.mode == GameMode::ThrowIn {
+                // Well into the field: a throw along the line goes straight out again.
+                target.y = target.y.clamp(-HALF_WIDTH + 6.0, HALF_WIDTH - 6.0);
+            }
             kick(me.position, KickKind::ShortPass, target)
         }
     }

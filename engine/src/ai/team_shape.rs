@@ -62,7 +62,7 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Diffi
     y = y.clamp(-HALF_WIDTH + 2.0, HALF_WIDTH - 2.0);
     let mut target = Vec2::new(x, y);
     if !ours && view.mode == crate::game::GameMode::Normal && !p.is_keeper() {
-        target = mark(view, target, frame, difficulty.theta);
+        target = mark(view, target, p.side.opponent(), frame, difficulty.theta);
     }
     // At an opponents' set piece keep the distance the laws ask for.
     if view.mode != crate::game::GameMode::Normal && !ours {
@@ -76,14 +76,13 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Diffi
 
 /// Moves a defending player's place `target` (team frame) towards the goal side of the nearest
 /// opponent in his zone, if any.
-fn mark(view: &MatchView, target: Vec2, frame: TeamFrame, theta: f32) -> Vec2 {
+fn mark(view: &MatchView, target: Vec2, opponents: crate::geometry::Side, frame: TeamFrame, theta: f32) -> Vec2 {
     let own_goal = Vec2::new(-HALF_LENGTH, 0.0);
     let mut best = None;
     let mut best_d2 = MARK_RADIUS * MARK_RADIUS;
-    for g in view.ranges.iter().flat_map(|r| r.clone()) {
+    for g in view.ranges[opponents.index()].clone() {
         let o = &view.players[g];
-        // Opponents of the marker: their frame is the other one.
-        if !o.active || o.is_keeper() || frame.vec2(Vec2::X).x * o.side.attack_sign() > 0.0 || view.owner == Some(g) {
+        if !o.active || o.is_keeper() || view.owner == Some(g) {
             continue;
         }
         let at = frame.vec2(o.position);

@@ -20,6 +20,9 @@ const SLIDE_SPEED: f32 = 7.5;
 /// Goalkeeper's dive: duration (ticks) and lateral speed (m/s).
 const DIVE_TICKS: u16 = 35;
 const DIVE_SPEED: f32 = 6.5;
+/// Fatigue is updated every this many ticks of play (0.1 s).
+const FATIGUE_EVERY: u64 = 10;
+const FATIGUE_SECONDS: f32 = FATIGUE_EVERY as f32 * TICK_SECONDS;
 /// Where a dribbler keeps the ball: this far ahead of him (m).
 const CARRY_DISTANCE: f32 = 0.5;
 /// Top speed with the ball at one's feet (m/s): the ball slows a sprinter down a little.
@@ -195,14 +198,17 @@ impl Match {
 
     fn move_players(&mut self) {
         let base = MotionLimits::default();
+        let fatigue_tick = self.in_play_ticks.is_multiple_of(FATIGUE_EVERY);
         for g in 0..self.players.len() {
             let theta = self.difficulty[self.players[g].side.index()];
             let p = &mut self.players[g];
             if !p.active {
                 continue;
             }
-            let speed = p.velocity.length();
-            crate::player::fatigue::update(p, speed * TICK_SECONDS, speed, p.attributes.stamina, p.fresh_speed);
+            if fatigue_tick {
+                let speed = p.velocity.length();
+                crate::player::fatigue::update(p, speed, FATIGUE_SECONDS, p.attributes.stamina, p.fresh_speed);
+            }
             if p.slide_ticks > 0 || p.dive_ticks > 0 {
                 p.slide_ticks = p.slide_ticks.saturating_sub(1);
                 p.velocity *= 0.96;
@@ -236,6 +242,12 @@ impl Match {
     }
 
     fn move_ball(&mut self) {
+        if self.taker.is_some() && self.owner == self.taker {
+            // A set piece: the ball stays on its spot until the taker plays it (a taker turning
+            // on the touchline must not carry it over the line).
+            self.ball.velocity = glam::Vec3::ZERO;
+            return;
+        }
         if let Some(g) = self.owner {
             // At the owner's feet, half a metre ahead of him.
             let p = &self.players[g];

@@ -23,8 +23,16 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Diffic
                 // Close down the carrier: aim a little ahead of him, goal-side.
                 Some(o) => {
                     let carrier = &view.players[o];
-                    let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
-                    carrier.position + carrier.velocity * 0.3 + (own_goal - carrier.position).normalize_or_zero() * 0.6
+                    if p.position.distance(carrier.position) < 2.5 {
+                        // At the carrier: go for the ball itself, in front of him (standing off
+                        // goal-side, a still carrier could shield it for ever).
+                        ball + (ball - carrier.position).normalize_or_zero() * 0.3
+                    } else {
+                        let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
+                        carrier.position
+                            + carrier.velocity * 0.3
+                            + (own_goal - carrier.position).normalize_or_zero() * 0.6
+                    }
                 }
                 // Close to a loose ball: go straight at it.
                 None if p.position.distance(ball) < 3.0 => ball + view.ball.velocity.truncate() * 0.1,

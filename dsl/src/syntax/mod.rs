@@ -61,7 +61,7 @@ fn syntax_error(e: pest::error::Error<Rule>, source: &Source) -> Diagnostic {
     } else {
         start + text[start..].find(|c: char| c.is_whitespace()).unwrap_or(text.len() - start).max(1)
     };
-    let end = floor_char_boundary(text, end.min(text.len()));
+    let end = ceil_char_boundary(text, end.min(text.len()));
     let found = text.get(start..end).filter(|s| !s.is_empty()).unwrap_or("end of file");
     let mut expected: Vec<String> = Vec::new();
     if let pest::error::ErrorVariant::ParsingError { positives, .. } = &e.variant {
@@ -84,10 +84,10 @@ fn syntax_error(e: pest::error::Error<Rule>, source: &Source) -> Diagnostic {
         .with_help("see grammar/README.md for the statements a scenario may contain")
 }
 
-/// The largest char boundary at or before `i`.
-fn floor_char_boundary(text: &str, mut i: usize) -> usize {
+/// The smallest char boundary at or after `i` (so that a one-byte span covers a whole char).
+fn ceil_char_boundary(text: &str, mut i: usize) -> usize {
     while !text.is_char_boundary(i) {
-        i -= 1;
+        i += 1;
     }
     i
 }
@@ -149,7 +149,11 @@ fn missing_brace(e: &pest::error::Error<Rule>, text: &str, at: usize, source: &S
         return None;
     }
     let before = text[..at].trim_end();
-    let word_start = before.rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).map_or(0, |i| i + 1);
+    let word_start = before
+        .char_indices()
+        .rev()
+        .find(|&(_, c)| !(c.is_ascii_alphanumeric() || c == '_'))
+        .map_or(0, |(i, c)| i + c.len_utf8());
     let word = &before[word_start..];
     if !STATEMENT_KEYWORDS.contains(&word) {
         return None;

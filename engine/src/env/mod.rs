@@ -339,9 +339,15 @@ impl Env {
 
     /// GRF's anti-stalling rule (grf.md §5.4): after 20 steps waiting at a set piece every agent
     /// action becomes `short_pass`; after that, `idle`, except that the agent-controlled ball owner
-    /// is made to run towards the opponents' goal (and after 30 steps back).
+    /// is made to run towards the opponents' goal (and after 30 steps back). `builtin_ai` is left
+    /// alone: the built-in AI takes set pieces itself.
     fn anti_stalling(&self, i: usize, action: Action) -> Action {
         use std::cmp::Ordering;
+        // A player handed to the built-in AI takes the set piece itself; overriding it with `idle`
+        // would freeze the restart the rule exists to end.
+        if action == Action::BuiltinAi {
+            return action;
+        }
         match self.state.waiting_for_game.cmp(&20) {
             Ordering::Less => action,
             Ordering::Equal => Action::ShortPass,

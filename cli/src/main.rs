@@ -9,12 +9,15 @@
 //! touchline compile drills/my_drill.tl -o my_drill.json
 //! touchline fmt drills/my_drill.tl
 //! touchline list
+//! touchline run 11_vs_11_easy_stochastic --record replays/
+//! touchline replay replays/11_vs_11_easy_stochastic_seed0_ep0.tlreplay -o match.gif
+//! touchline view replays/
 //! ```
 //!
 //! Exit codes: 0 on success; 1 when `check` finds an error, `fmt --check` finds an unformatted
 //! file, the engine fails or the output cannot be written; 2 for bad input (usage errors, an
 //! unknown scenario, an unreadable, invalid or non-compiling scenario file, an agent configuration
-//! the scenario cannot take). Errors are printed to stderr as miette diagnostics.
+//! the scenario cannot take, an unreadable, damaged or non-reproducing replay). Errors are printed to stderr as miette diagnostics.
 
 mod cmd;
 
@@ -48,6 +51,11 @@ enum Command {
     /// List the stdlib scenarios with their descriptions.
     #[command(alias = "scenarios")]
     List(cmd::scenarios::ScenariosArgs),
+    /// Draw a replay into a video (MP4 with ffmpeg, animated GIF, or PNG frames).
+    Replay(cmd::replay::ReplayArgs),
+    /// Watch replays in the browser: serves a viewer page on localhost, or writes it as one
+    /// self-contained HTML file.
+    View(cmd::view::ViewArgs),
 }
 
 /// Everything a command can fail with.
@@ -120,6 +128,46 @@ pub(crate) enum CliError {
         files: String,
     },
 
+    /// A file or folder could not be written.
+    #[error("cannot write {}", path.display())]
+    #[diagnostic(code(tl::cli::write))]
+    Write {
+        /// The file.
+        path: std::path::PathBuf,
+        /// Why.
+        #[source]
+        source: io::Error,
+    },
+
+    /// A replay file is damaged, from another version, or does not reproduce.
+    #[error("cannot use the replay {}", path.display())]
+    #[diagnostic(code(tl::cli::replay), help("replays are written by `touchline run --record DIR`"))]
+    Replay {
+        /// The file.
+        path: std::path::PathBuf,
+        /// The reason.
+        #[source]
+        source: touchline_render::replay::ReplayError,
+    },
+
+    /// A video or image could not be made.
+    #[error("cannot write the video {}: {reason}", path.display())]
+    #[diagnostic(code(tl::cli::video))]
+    Video {
+        /// The output.
+        path: std::path::PathBuf,
+        /// Why.
+        reason: String,
+    },
+
+    /// The viewer could not serve.
+    #[error("cannot serve the viewer: {reason}")]
+    #[diagnostic(code(tl::cli::view))]
+    Serve {
+        /// Why.
+        reason: String,
+    },
+
     /// Writing to stdout failed.
     #[error("cannot write the output")]
     #[diagnostic(code(tl::cli::output))]
@@ -130,8 +178,18 @@ impl CliError {
     /// 2 for bad input, 1 for failures while running.
     fn exit_code(&self) -> u8 {
         match self {
-            CliError::Load(_) | CliError::Config { .. } | CliError::Syntax(_) | CliError::Read { .. } => 2,
-            CliError::Check { .. } | CliError::Unformatted { .. } | CliError::Engine { .. } | CliError::Output(_) => 1,
+            CliError::Load(_)
+            | CliError::Config { .. }
+            | CliError::Syntax(_)
+            | CliError::Read { .. }
+            | CliError::Replay { .. } => 2,
+            CliError::Check { .. }
+            | CliError::Unformatted { .. }
+            | CliError::Engine { .. }
+            | CliError::Output(_)
+            | CliError::Write { .. }
+            | CliError::Video { .. }
+            | CliError::Serve { .. } => 1,
         }
     }
 }
@@ -148,6 +206,8 @@ fn main() -> ExitCode {
         Command::Compile(args) => cmd::compile::run(&args),
         Command::Fmt(args) => cmd::fmt::run(&args),
         Command::List(args) => cmd::scenarios::run(&args),
+        Command::Replay(args) => cmd::replay::run(&args),
+        Command::View(args) => cmd::view::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -5,6 +5,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use touchline_engine::obs::{FrameStack, encode_simple115, encode_simple115v2, encode_smm};
 use touchline_engine::{ActionSet, EngineError, Env, EnvConfig, Scenario, Snapshot, StepOutcome};
+use touchline_render::{PixelsEncoder, PixelsKind};
 
 /// Frames kept by `stacked=True` (GRF's FrameStack(4), grf.md §4.4).
 const STACK: usize = 4;
@@ -20,6 +21,8 @@ pub(crate) enum Representation {
     Simple115v2,
     /// uint8 (H, W, 4) Super Mini Map.
     Smm { width: usize, height: usize },
+    /// uint8 (H, W, 3) RGB or (H, W, 1) grey rendered frames (touchline-render).
+    Pixels { width: usize, height: usize, gray: bool },
 }
 
 impl Representation {
@@ -29,19 +32,20 @@ impl Representation {
             "raw" => Ok(Representation::Raw),
             "simple115" => Ok(Representation::Simple115),
             "simple115v2" => Ok(Representation::Simple115v2),
-            "extracted" | "smm" => {
+            "extracted" | "smm" | "pixels" | "pixels_gray" => {
                 if width == 0 || height == 0 || width > 4096 || height > 4096 {
                     return Err(PyValueError::new_err(format!(
                         "channel_dimensions must be (width, height) between 1 and 4096, got ({width}, {height})"
                     )));
                 }
-                Ok(Representation::Smm { width, height })
+                Ok(match name {
+                    "pixels" => Representation::Pixels { width, height, gray: false },
+                    "pixels_gray" => Representation::Pixels { width, height, gray: true },
+                    _ => Representation::Smm { width, height },
+                })
             }
-            "pixels" | "pixels_gray" => Err(PyValueError::new_err(format!(
-                "representation {name:?} needs the renderer, which is not in touchline yet; use \"extracted\" (SMM) or \"simple115v2\""
-            ))),
             other => Err(PyValueError::new_err(format!(
-                "unknown representation {other:?}: expected \"raw\", \"simple115\", \"simple115v2\" or \"extracted\""
+                "unknown representation {other:?}: expected \"raw\", \"simple115\", \"simple115v2\", \"extracted\", \"pixels\" or \"pixels_gray\""
             ))),
         }
     }
@@ -52,6 +56,10 @@ impl Representation {
             Representation::Raw => (Vec::new(), 0),
             Representation::Simple115 | Representation::Simple115v2 => (vec![115], 115),
             Representation::Smm { width, height } => (vec![height, width, 4], 4),
+            Representation::Pixels { width, height, gray } => {
+                let c = if gray { 1 } else { 3 };
+                (vec![height, width, c], c)
+            }
         }
     }
 }
@@ -132,6 +140,8 @@ pub(crate) struct EnvCore {
     stacks_f32: Vec<FrameStack<f32>>,
     stacks_u8: Vec<FrameStack<u8>>,
     frame_u8: Vec<u8>,
+    /// The renderer of the pixels representations (the pitch painted once).
+    pixels: Option<PixelsEncoder>,
 }
 
 impl EnvCore {
@@ -142,7 +152,7 @@ impl EnvCore {
         let m = env.num_controllers();
         let (stacks_f32, stacks_u8) = match (args.stacked, args.representation) {
             (false, _) | (_, Representation::Raw) => (Vec::new(), Vec::new()),
-            (true, Representation::Smm { .. }) => {
+            (true, Representation::Smm { .. } | Representation::Pixels { .. }) => {
                 (Vec::new(), (0..m).map(|_| FrameStack::new(frame_len, channels, STACK)).collect())
             }
             (true, _) => ((0..m).map(|_| FrameStack::new(frame_len, channels, STACK)).collect(), Vec::new()),
@@ -155,6 +165,14 @@ impl EnvCore {
             stacks_f32,
             stacks_u8,
             frame_u8: vec![0; frame_len],
+            pixels: match args.representation {
+                Representation::Pixels { width, height, gray } => {
+                    let kind = if gray { PixelsKind::Gray } else { PixelsKind::Rgb };
+                    // Sizes were checked when the arguments were parsed.
+                    PixelsEncoder::new(width, height, kind).ok()
+                }
+                _ => None,
+            },
         })
     }
 
@@ -177,7 +195,7 @@ impl EnvCore {
     pub(crate) fn dtype(&self) -> &'static str {
         match self.representation {
             Representation::Raw => "raw",
-            Representation::Smm { .. } => "uint8",
+            Representation::Smm { .. } | Representation::Pixels { .. } => "uint8",
             _ => "float32",
         }
     }
@@ -213,6 +231,24 @@ impl EnvCore {
                         stack.write_stacked(dst);
                     } else {
                         encode_smm(obs, width, height, dst);
+                    }
+                }
+            }
+            (Representation::Pixels { .. }, ObsOut::U8(out)) => {
+                let Some(encoder) = self.pixels.as_mut() else { return };
+                for i in 0..self.env.num_controllers() {
+                    let dst = &mut out[i * len..(i + 1) * len];
+                    if self.stacked {
+                        encoder.encode(&self.env, i, &mut self.frame_u8);
+                        let stack = &mut self.stacks_u8[i];
+                        if fresh {
+                            stack.reset(&self.frame_u8);
+                        } else {
+                            stack.push(&self.frame_u8);
+                        }
+                        stack.write_stacked(dst);
+                    } else {
+                        encoder.encode(&self.env, i, dst);
                     }
                 }
             }

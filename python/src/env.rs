@@ -5,6 +5,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList, PyTuple};
 use touchline_engine::{Side, StepInfo};
+use touchline_render::{RenderOptions, Renderer, Scene};
 
 use crate::convert::raw_to_dict;
 use crate::core::{EnvArgs, EnvCore, ObsOut};
@@ -18,6 +19,8 @@ type StepResult<'py> = (Bound<'py, PyAny>, Bound<'py, PyArray1<f32>>, bool, bool
 pub(crate) struct PyEnv {
     core: EnvCore,
     actions: Vec<u32>,
+    /// The renderer of `render()`, made at the first call (and again for another size).
+    renderer: Option<Renderer>,
 }
 
 /// Reads one action index per controller from an int, a sequence or a numpy array.
@@ -108,7 +111,7 @@ impl PyEnv {
                 channel_dimensions,
             )?;
             let core = EnvCore::new(&args, seed).map_err(engine_error)?;
-            Ok(PyEnv { core, actions: Vec::new() })
+            Ok(PyEnv { core, actions: Vec::new(), renderer: None })
         })
     }
 
@@ -177,6 +180,24 @@ impl PyEnv {
     /// Restores a state from `get_state` of an env built with the same arguments.
     fn set_state(&mut self, state: &[u8]) -> PyResult<()> {
         guard(|| self.core.restore_bytes(state).map_err(engine_error))
+    }
+
+    /// The match drawn from above: a `(height, width, 3)` uint8 RGB image with the scoreboard,
+    /// every agent-driven player ringed in yellow.
+    #[pyo3(signature = (width = 1280, height = 720))]
+    fn render<'py>(&mut self, py: Python<'py>, width: usize, height: usize) -> PyResult<Bound<'py, PyAny>> {
+        guard(|| {
+            let mut renderer = match self.renderer.take() {
+                Some(r) if r.width() == width && r.height() == height => r,
+                _ => Renderer::new(width, height, RenderOptions::default())
+                    .map_err(|e| PyValueError::new_err(e.to_string()))?,
+            };
+            renderer.render(&Scene::of_env(&self.core.env));
+            let mut rgb = vec![0u8; width * height * 3];
+            renderer.write_rgb(&mut rgb);
+            self.renderer = Some(renderer);
+            Ok(PyArray1::from_vec(py, rgb).reshape([height, width, 3])?.into_any())
+        })
     }
 
     fn raw_observations<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {

@@ -141,10 +141,8 @@ def test_other_config_options() -> None:
     ("kwargs", "message"),
     [
         ({"env_name": ""}, "env_name"),
-        ({"representation": "pixels"}, "rendering"),
         ({"representation": "smm"}, "Unsupported representation: smm"),
         ({"rewards": "checkpoints"}, "scoring"),
-        ({"render": True}, "rendering"),
         ({"write_video": True}, "video"),
         ({"write_goal_dumps": True}, "dumps"),
         ({"write_full_episode_dumps": True}, "dumps"),

@@ -59,7 +59,7 @@ def test_invalid_scenario_file(tmp_path) -> None:
     [
         ({"representation": "pixel"}, "unknown representation"),
         ({"representation": "raw"}, "compat"),
-        ({"representation": "pixels"}, "rendering"),
+        ({"channel_dimensions": (0, 72)}, "channel_dimensions"),
         ({"rewards": "checkpoints"}, "scoring"),
         ({"rewards": "scoring,goals"}, "goals"),
         ({"action_set": "full"}, "full"),

@@ -156,7 +156,7 @@ def test_raw_observations_next_to_an_array_representation() -> None:
 
 def test_render_mode_none_renders_nothing() -> None:
     env = touchline.make(DRILL)
-    assert env.render_mode is None and env.metadata["render_modes"] == []
+    assert env.render_mode is None and env.metadata["render_modes"] == ["rgb_array"]
     assert env.render() is None
     env.close()
     env.close()

@@ -17,12 +17,13 @@ from gymnasium import spaces
 
 from ._touchline import Env as _CoreEnv
 
-#: Representations whose observations are arrays (Gymnasium and PettingZoo envs accept these).
-ARRAY_REPRESENTATIONS = ("simple115v2", "simple115", "extracted")
+#: Representations whose observations are arrays (Gymnasium and PettingZoo envs accept these);
+#: "pixels" and "pixels_gray" are frames drawn on the CPU (grf.md §4.3).
+ARRAY_REPRESENTATIONS = ("simple115v2", "simple115", "extracted", "pixels", "pixels_gray")
 #: Every representation the extension can encode; "raw" is a list of dicts (grf.md §3.1).
 REPRESENTATIONS = ("raw", *ARRAY_REPRESENTATIONS)
-#: GRF representations that need rendering, which touchline does not do yet.
-RENDERED_REPRESENTATIONS = ("pixels", "pixels_gray")
+#: Render modes of the Gymnasium and PettingZoo envs: `render()` returns an RGB array.
+RENDER_MODES = ("rgb_array",)
 #: Action sets (grf.md §5.2): "default" has 19 actions, "v2" adds builtin_ai (20).
 ACTION_SETS = ("default", "v2")
 #: Reward terms (grf.md §6); "scoring" is always on.
@@ -54,11 +55,6 @@ def representation_argument(representation: str, *, allow_raw: bool) -> str:
             "touchline.compat.gfootball.create_environment(..., representation='raw') or the "
             "low-level touchline._touchline.Env(..., representation='raw'), or call "
             "env.raw_observations() next to an array representation"
-        )
-    if representation in RENDERED_REPRESENTATIONS:
-        raise ValueError(
-            f"representation={representation!r} needs rendering, which touchline does not do yet; "
-            f"use one of {', '.join(map(repr, REPRESENTATIONS if allow_raw else ARRAY_REPRESENTATIONS))}"
         )
     accepted = REPRESENTATIONS if allow_raw else ARRAY_REPRESENTATIONS
     if representation not in accepted:
@@ -148,11 +144,11 @@ def channel_dimensions_argument(channel_dimensions: Any) -> tuple[int, int]:
 
 
 def render_mode_argument(render_mode: str | None) -> None:
-    """touchline does not render yet: only `render_mode=None` is accepted."""
-    if render_mode is not None:
+    """Checks `render_mode`: None or "rgb_array" (frames drawn on the CPU, no display needed)."""
+    if render_mode is not None and render_mode not in RENDER_MODES:
         raise ValueError(
-            f"render_mode={render_mode!r} is not available: touchline does not render yet, "
-            "so the only render mode is None"
+            f"render_mode={render_mode!r} is not available; use None or 'rgb_array' "
+            "(touchline draws on the CPU: no window, no display)"
         )
 
 

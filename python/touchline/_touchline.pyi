@@ -40,7 +40,8 @@ class Env:
 
     Args:
         scenario: stdlib name, or path to a compiled `.json` scenario.
-        representation: "raw", "simple115", "simple115v2" or "extracted" (SMM).
+        representation: "raw", "simple115", "simple115v2", "extracted" (SMM), "pixels" (RGB
+            frames drawn on the CPU) or "pixels_gray".
         left_agents / right_agents: players the agents control on each side.
         rewards: "scoring" or "scoring,checkpoints".
         action_set: "default" (19 actions) or "v2" (20, adds builtin_ai).
@@ -98,6 +99,13 @@ class Env:
         """
     def raw_observations(self) -> list[dict[str, Any]]:
         """The raw observation of each controller (GRF's dict of numpy arrays, grf.md §3.1)."""
+    def render(self, width: int = 1280, height: int = 720) -> npt.NDArray[np.uint8]:
+        """The match drawn from above on the CPU: a (height, width, 3) uint8 RGB image with the
+        scoreboard, every agent-driven player ringed in yellow.
+
+        Raises:
+            ValueError: a side of 0 or above 8192 pixels.
+        """
     def get_state(self) -> bytes:
         """The whole state of the episode: engine snapshot plus stacked frames."""
     def set_state(self, state: bytes) -> None:

@@ -55,10 +55,12 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
     | `simple115v2` | (115,) float32 | 0–21 left positions (x, y per player, padded with −1 to 11 players), 22–43 left directions, 44–65 right positions, 66–87 right directions, 88–90 ball x, y, z, 91–93 ball direction, 94–96 ball owner one-hot (nobody, left, right), 97–107 active player one-hot, 108–114 game mode one-hot (grf.md §4.1) |
     | `simple115` | (115,) float32 | the same blocks, the four player blocks back to back and padded only at the end (GRF's legacy layout) |
     | `extracted` | (72, 96, 4) uint8 | Super Mini Map: channels left team, right team, ball, active player; 255 where marked (grf.md §4.2); (height, width) from `channel_dimensions=(width, height)` |
+    | `pixels` | (72, 96, 3) uint8 | the match drawn from above on the CPU, RGB 0–255: own team red attacking right, opponents blue, controlled player ringed in yellow, ball with its shadow (grf.md §4.3); size from `channel_dimensions` |
+    | `pixels_gray` | (72, 96, 1) uint8 | the same frame in grey, 0.299 R + 0.587 G + 0.114 B |
 
     `stacked=True` stacks the last 4 observations along the last axis (115 → 460 floats, 4 → 16
-    channels; grf.md §4.4). With M > 1 controlled players observations gain a leading axis of size M.
-    The space is `Box(-inf, inf)` for `simple115*` (as in GRF) and `Box(0, 255)` for `extracted`.
+    channels, 3 → 12 for `pixels`; grf.md §4.4). With M > 1 controlled players observations gain a leading axis of size M.
+    The space is `Box(-inf, inf)` for `simple115*` (as in GRF) and `Box(0, 255)` for `extracted` and `pixels*`.
     `representation="raw"` is not accepted here (a list of dicts has no Box); use
     `raw_observations()`, `touchline.compat.gfootball` or `touchline._touchline.Env`.
 
@@ -100,14 +102,16 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
     * `seed`: seed of the first episode; None draws a random one. `reset(seed=s)` reseeds, and
       `reset()` continues with the next episode of the current seed. Same seed and same actions
       give the same trajectory.
-    * `render_mode`: must be None; rendering is not available yet.
+    * `render_mode`: None or `"rgb_array"`: `render()` then returns the match drawn from above,
+      a (720, 1280, 3) uint8 RGB frame with the scoreboard, made on the CPU (no display needed;
+      Gymnasium's `RecordVideo` works with it).
 
     ## Version History
 
     * v0: first version.
     """
 
-    metadata: dict[str, Any] = {"render_modes": []}
+    metadata: dict[str, Any] = {"render_modes": ["rgb_array"], "render_fps": 10}
 
     def __init__(
         self,
@@ -247,6 +251,10 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
         """GRF's raw observation of each controlled player (a dict of numpy arrays, grf.md §3.1)."""
         return self._core.raw_observations()
 
-    def render(self) -> None:
-        """touchline does not render yet; with `render_mode=None` there is nothing to return."""
+    def render(self) -> np.ndarray | None:
+        """With `render_mode="rgb_array"`: the match drawn from above, a (720, 1280, 3) uint8 RGB
+        frame (scoreboard on top, controlled players ringed in yellow). With None: nothing."""
+        if self.render_mode == "rgb_array":
+            frame: np.ndarray = self._core.render()
+            return frame
         return None

@@ -34,7 +34,8 @@ class FootballParallelEnv(ParallelEnv[str, np.ndarray, int]):  # type: ignore[mi
     """
 
     metadata: dict[str, Any] = {
-        "render_modes": [],
+        "render_modes": ["rgb_array"],
+        "render_fps": 10,
         "name": "touchline_v0",
         "is_parallelizable": True,
     }
@@ -164,8 +165,12 @@ class FootballParallelEnv(ParallelEnv[str, np.ndarray, int]):  # type: ignore[mi
             self.agents = []
         return observations, reward_dict, terminations, truncations, infos
 
-    def render(self) -> None:
-        """touchline does not render yet; with `render_mode=None` there is nothing to return."""
+    def render(self) -> np.ndarray | None:
+        """With `render_mode="rgb_array"`: the match drawn from above, a (720, 1280, 3) uint8 RGB
+        frame. With None: nothing."""
+        if self.render_mode == "rgb_array":
+            frame: np.ndarray = self._core.render()
+            return frame
         return None
 
     def close(self) -> None:

@@ -67,7 +67,11 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         render_mode: str | None = None,
         copy: bool = True,
     ) -> None:
-        _arguments.render_mode_argument(render_mode)
+        if render_mode is not None:
+            raise ValueError(
+                f"render_mode={render_mode!r} is not available for vector envs; render one env "
+                "with touchline.make(..., render_mode='rgb_array')"
+            )
         if (
             isinstance(num_envs, bool)
             or not isinstance(num_envs, (int, np.integer))

@@ -3,9 +3,11 @@
 pub(crate) mod check;
 pub(crate) mod compile;
 pub(crate) mod fmt;
+pub(crate) mod replay;
 pub(crate) mod run;
 pub(crate) mod scenarios;
 pub(crate) mod stats;
+pub(crate) mod view;
 
 use std::io::{self, Write};
 use std::path::Path;

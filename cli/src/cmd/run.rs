@@ -4,6 +4,7 @@
 //! summary; or, with `--json`, one JSON document ([`Report`]) and nothing else on stdout.
 
 use std::io::{self, IsTerminal, Write};
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use clap::{Args, ValueEnum};
@@ -12,6 +13,7 @@ use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 use serde::Serialize;
 use touchline_engine::{Action, ActionSet, Env, EnvConfig, Scenario};
+use touchline_render::replay::{Recorder, Replay};
 
 use super::stats::StatsLine;
 
@@ -57,6 +59,20 @@ pub(crate) struct RunArgs {
     /// summary.
     #[arg(long)]
     stats: bool,
+
+    /// Write replays of the episodes into this folder (`touchline replay` and `touchline view`
+    /// read them): `<scenario>_seed<S>_ep<E>.tlreplay`.
+    #[arg(long, value_name = "DIR")]
+    record: Option<PathBuf>,
+
+    /// With --record: keep every Nth episode (the first, the N+1th, …).
+    #[arg(long, default_value_t = 1, value_name = "N", requires = "record", value_parser = clap::value_parser!(u64).range(1..))]
+    record_every: u64,
+
+    /// With --record: keep only clips round goals (the 100 steps before each goal and 1 after, as
+    /// GRF's score dumps), `…_goal<STEP>.tlreplay`, instead of whole episodes.
+    #[arg(long, requires = "record")]
+    record_goals: bool,
 }
 
 /// How actions are chosen for every controlled player.
@@ -240,11 +256,15 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     let mut agent = Agent::new(args.policy, args.seed);
     let mut actions = vec![Action::Idle; env.num_controllers()];
     let mut records = Vec::new();
+    if let Some(dir) = &args.record {
+        std::fs::create_dir_all(dir).map_err(|source| CliError::Write { path: dir.clone(), source })?;
+    }
     let start = Instant::now();
     for i in 0..args.episodes {
         if i > 0 {
             env.reset();
         }
+        let mut recorder = (args.record.is_some() && i % args.record_every == 0).then(|| Recorder::start(&env));
         let mut reward = 0.0_f64;
         let outcome = loop {
             agent.act(&mut actions);
@@ -253,12 +273,23 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
                 steps: env.info().steps,
                 source,
             })?;
+            if let Some(r) = &mut recorder {
+                r.record(&env, &actions);
+            }
             reward += f64::from(env.rewards().first().copied().unwrap_or(0.0));
             bar.inc(1);
             if outcome.terminated || outcome.truncated {
                 break outcome;
             }
         };
+        if let (Some(dir), Some(recorder)) = (&args.record, recorder) {
+            let written = bar.suspend(|| save_replays(dir, &recorder.finish(), args.record_goals))?;
+            if !args.json {
+                for path in written {
+                    bar.suspend(|| writeln!(out, "replay   {}", path.display()))?;
+                }
+            }
+        }
         let info = env.info();
         let record = EpisodeRecord {
             episode: info.episode,
@@ -313,6 +344,33 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     }
     out.flush()?;
     Ok(())
+}
+
+/// Writes `replay` into `dir`, whole or as clips round its goals; returns the files written.
+fn save_replays(dir: &std::path::Path, replay: &Replay, goals_only: bool) -> Result<Vec<PathBuf>, CliError> {
+    let (seed, episode) = match &replay.start {
+        touchline_render::replay::Start::Reset { seed, episode } => (*seed, *episode),
+        touchline_render::replay::Start::Snapshot(_) => (0, 0),
+    };
+    let name = if replay.scenario.name.is_empty() { "scenario" } else { replay.scenario.name.as_str() };
+    let stem = format!("{name}_seed{seed}_ep{episode}");
+    let mut parts = Vec::new();
+    if goals_only {
+        for g in replay.goal_frames() {
+            let clip = replay
+                .clip(g.saturating_sub(100), (g + 1).min(replay.steps()))
+                .map_err(|source| CliError::Replay { path: dir.join(&stem), source })?;
+            parts.push((dir.join(format!("{stem}_goal{g}.tlreplay")), clip.to_bytes()));
+        }
+    } else {
+        parts.push((dir.join(format!("{stem}.tlreplay")), replay.to_bytes()));
+    }
+    let mut written = Vec::new();
+    for (path, bytes) in parts {
+        std::fs::write(&path, bytes).map_err(|source| CliError::Write { path: path.clone(), source })?;
+        written.push(path);
+    }
+    Ok(written)
 }
 
 /// A progress bar over the expected total of steps, on stderr; hidden with `--json`, when stderr

@@ -181,6 +181,19 @@ impl Env {
         self.begin(0);
     }
 
+    /// Reseeds and starts 0-based episode `episode` of `seed`: the state the `episode`-th reset
+    /// after [`Env::reset_with_seed`] would give (episodes do not depend on earlier ones). Replays
+    /// use it to start where a recording started.
+    pub fn reset_to_episode(&mut self, seed: u64, episode: u64) {
+        self.state.seed = seed;
+        self.begin(episode);
+    }
+
+    /// The seed of the current episodes (set at construction or by the last reseeding reset).
+    pub fn seed(&self) -> u64 {
+        self.state.seed
+    }
+
     fn begin(&mut self, episode: u64) {
         self.state.episode = episode;
         self.state.fresh = true;

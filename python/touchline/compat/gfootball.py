@@ -13,8 +13,12 @@ truncated. Observations are shaped as in GRF (grf.md §4, §8.2): one controlled
 `(115,)` or `(72, 96, 4)`, M players add a leading axis of size M, and `raw` is always a list of M
 dicts. The reward is a float for one player and a float32 array (M,) for several.
 
-Not available yet (a `ValueError` says so when asked for): rendering (`render=True`, `pixels`,
-`pixels_gray`), dumps and videos (`write_goal_dumps`, `write_full_episode_dumps`, `write_video`),
+`pixels` and `pixels_gray` are touchline's CPU-drawn top view (grf.md §4.3; `render=True` is
+accepted and changes nothing, since touchline draws on demand without a display), and
+`env.render(mode="rgb_array")` returns a 1280 × 720 RGB frame (GRF returns BGR there).
+
+Not available yet (a `ValueError` says so when asked for): GRF's dumps and videos
+(`write_goal_dumps`, `write_full_episode_dumps`, `write_video`; use `touchline run --record`),
 `extra_players` and `action_set="full"`. GRF's `control_all_players`
 reduction (`MultiAgentToSingleAgent`) is not applied: in such a scenario the env returns every
 controllable player.
@@ -123,11 +127,18 @@ class FootballEnv:
         """GRF's `env.unwrapped.observation()`: the raw observation of each controlled player."""
         return self._core.raw_observations()
 
-    def render(self, mode: str = "human") -> None:
-        """Rendering is not available yet."""
-        raise ValueError(
-            "rendering is not available yet in touchline (GRF's render, pixels and videos)"
-        )
+    def render(self, mode: str = "human") -> Any:
+        """GRF's `render(mode="rgb_array")`: the match drawn from above, `(720, 1280, 3)` uint8 RGB.
+
+        Raises:
+            ValueError: another mode ("human" needs a window, which touchline does not open).
+        """
+        if mode != "rgb_array":
+            raise ValueError(
+                f"render(mode={mode!r}) is not available: touchline draws without a window; "
+                "use render(mode='rgb_array') or `touchline view` on recorded replays"
+            )
+        return self._core.render()
 
     def close(self) -> None:
         """Nothing to release."""
@@ -193,11 +204,6 @@ def create_environment(
     level = options.pop("level", env_name)
     if not level:
         raise ValueError("env_name must name a scenario, e.g. env_name='academy_empty_goal_close'")
-    if representation in _arguments.RENDERED_REPRESENTATIONS or render:
-        raise ValueError(
-            "rendering (render=True, representation='pixels' or 'pixels_gray') is not available "
-            "yet in touchline; use 'extracted', 'simple115v2', 'simple115' or 'raw'"
-        )
     if representation not in _arguments.REPRESENTATIONS:
         raise ValueError(f"Unsupported representation: {representation}")
     if stacked and representation == "raw":

@@ -39,7 +39,8 @@ def test_pixels_show_the_match_in_the_controllers_frame() -> None:
     assert count(obs, LEFT_SHIRT) > 0 and count(obs, RIGHT_SHIRT) > 0
     assert np.any(np.all(np.abs(obs.astype(int) - RING) < 40, axis=-1))
     gray, _ = touchline.make(DRILL, representation="pixels_gray", seed=0).reset(seed=0)
-    expected = (4899 * obs[..., 0].astype(np.int64) + 9617 * obs[..., 1] + 1868 * obs[..., 2] + 8192) >> 14
+    r, g, b = (obs[..., c].astype(np.int64) for c in range(3))
+    expected = (4899 * r + 9617 * g + 1868 * b + 8192) >> 14
     np.testing.assert_array_equal(gray[..., 0], expected.astype(np.uint8))
     # A right-team controller sees itself in red too, attacking to the right.
     env = touchline.make("academy_3_vs_1_with_keeper", representation="pixels",
@@ -89,7 +90,8 @@ def test_render_rgb_array() -> None:
         env.step(5)
     later = env.render()
     assert later is not None and not np.array_equal(first, later)
-    check_env(env)  # with the render check
+    # Gymnasium's checker, render check included.
+    check_env(gymnasium.make(f"touchline/{DRILL}-v0", representation="pixels", render_mode="rgb_array").unwrapped)
 
 
 def test_render_from_the_extension_and_compat() -> None:
@@ -118,7 +120,7 @@ def test_pettingzoo_render() -> None:
 def test_record_video(tmp_path) -> None:
     env = gymnasium.wrappers.RecordVideo(
         touchline.make("academy_empty_goal_close", render_mode="rgb_array", seed=0),
-        str(tmp_path),
+        str(tmp_path / "videos"),
         episode_trigger=lambda episode: True,
         disable_logger=True,
     )
@@ -128,5 +130,5 @@ def test_record_video(tmp_path) -> None:
         if terminated or truncated:
             break
     env.close()
-    videos = list(tmp_path.glob("*.mp4"))
+    videos = list((tmp_path / "videos").glob("*.mp4"))
     assert videos and videos[0].stat().st_size > 1000

@@ -93,7 +93,7 @@ impl Replay {
         // two bytes each in postcard's varints), computed while serialising. Serialising plain
         // data into a Vec and compressing into a Vec cannot fail.
         let stored = Stored {
-            scenario: &self.scenario,
+            scenario: serde_json::to_string(&self.scenario).unwrap_or_default(),
             config: &self.config,
             start: &self.start,
             first_step: self.first_step,
@@ -161,8 +161,20 @@ impl Replay {
                 reason: format!("it decompresses to more than {MAX_DECOMPRESSED} bytes"),
             });
         }
-        let mut replay: Replay =
+        let read: Loaded =
             postcard::from_bytes(&raw).map_err(|e| ReplayError::Decode { reason: format!("postcard: {e}") })?;
+        let scenario = serde_json::from_str(&read.scenario)
+            .map_err(|e| ReplayError::Decode { reason: format!("the scenario: {e}") })?;
+        let mut replay = Replay {
+            scenario,
+            config: read.config,
+            start: read.start,
+            first_step: read.first_step,
+            roster: read.roster,
+            actions: read.actions,
+            controllers: read.controllers,
+            frames: read.frames,
+        };
         replay.check()?;
         delta_decode(&mut replay.frames);
         Ok(replay)
@@ -170,10 +182,11 @@ impl Replay {
 }
 
 /// [`Replay`] as written: the same fields in the same order (postcard encodes a struct as its
-/// fields in order), with the frames delta-encoded.
+/// fields in order), the scenario as JSON (its serde form skips default fields, which only a
+/// self-describing format can read back), the frames delta-encoded.
 #[derive(serde::Serialize)]
 struct Stored<'a> {
-    scenario: &'a touchline_engine::Scenario,
+    scenario: String,
     config: &'a touchline_engine::EnvConfig,
     start: &'a super::Start,
     first_step: u32,
@@ -181,6 +194,19 @@ struct Stored<'a> {
     actions: &'a [touchline_engine::Action],
     controllers: usize,
     frames: DeltaFrames<'a>,
+}
+
+/// [`Stored`] as read back (frames still delta-encoded).
+#[derive(serde::Deserialize)]
+struct Loaded {
+    scenario: String,
+    config: touchline_engine::EnvConfig,
+    start: super::Start,
+    first_step: u32,
+    roster: Vec<super::RosterEntry>,
+    actions: Vec<touchline_engine::Action>,
+    controllers: usize,
+    frames: Vec<Frame>,
 }
 
 /// Frames with each frame's ball and player positions (after the first frame) replaced by their

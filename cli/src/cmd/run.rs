@@ -256,6 +256,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     let mut agent = Agent::new(args.policy, args.seed);
     let mut actions = vec![Action::Idle; env.num_controllers()];
     let mut records = Vec::new();
+    let mut writer: Option<ReplayWriter> = None;
     if let Some(dir) = &args.record {
         std::fs::create_dir_all(dir).map_err(|source| CliError::Write { path: dir.clone(), source })?;
     }
@@ -283,10 +284,17 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
             }
         };
         if let (Some(dir), Some(recorder)) = (&args.record, recorder) {
-            let written = bar.suspend(|| save_replays(dir, &recorder.finish(), args.record_goals))?;
-            if !args.json {
-                for path in written {
-                    bar.suspend(|| writeln!(out, "replay   {}", path.display()))?;
+            // Compressing and writing happen on another thread while the next episode plays (at
+            // most one replay in flight), so recording costs the stepping thread only the frames.
+            let previous = writer.take();
+            let (dir, replay, goals) = (dir.clone(), recorder.finish(), args.record_goals);
+            writer = Some(std::thread::spawn(move || save_replays(&dir, &replay, goals)));
+            if let Some(done) = previous {
+                let written = joined(done, args)?;
+                if !args.json {
+                    for path in written {
+                        bar.suspend(|| writeln!(out, "replay   {}", path.display()))?;
+                    }
                 }
             }
         }
@@ -323,6 +331,14 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     }
     let elapsed = start.elapsed();
     bar.finish_and_clear();
+    if let Some(done) = writer.take() {
+        let written = joined(done, args)?;
+        if !args.json {
+            for path in written {
+                writeln!(out, "replay   {}", path.display())?;
+            }
+        }
+    }
 
     let summary = Summary::new(&records, elapsed);
     if args.json {
@@ -344,6 +360,19 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     }
     out.flush()?;
     Ok(())
+}
+
+/// A replay being written on its own thread.
+type ReplayWriter = std::thread::JoinHandle<Result<Vec<PathBuf>, CliError>>;
+
+/// Waits for a replay writer; returns the files it wrote.
+fn joined(writer: ReplayWriter, args: &RunArgs) -> Result<Vec<PathBuf>, CliError> {
+    writer.join().unwrap_or_else(|_| {
+        Err(CliError::Write {
+            path: args.record.clone().unwrap_or_default(),
+            source: io::Error::other("the replay writer stopped unexpectedly"),
+        })
+    })
 }
 
 /// Writes `replay` into `dir`, whole or as clips round its goals; returns the files written.

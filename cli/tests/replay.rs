@@ -121,3 +121,23 @@ fn damaged_replays_exit_2_with_the_reason() {
     assert!(flat(&out.stderr).contains("unknown video type"), "{}", flat(&out.stderr));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn mp4_through_ffmpeg_when_installed() {
+    let has_ffmpeg = Command::new("ffmpeg").arg("-version").output().is_ok_and(|o| o.status.success());
+    let dir = scratch("mp4");
+    let out = touchline(&["run", "academy_empty_goal_close", "--record", s(&dir)]);
+    assert!(out.status.success());
+    let replay = dir.join("academy_empty_goal_close_seed0_ep0.tlreplay");
+    let mp4 = dir.join("ep0.mp4");
+    let out = touchline(&["replay", s(&replay), "-o", s(&mp4), "--width", "160", "--height", "90"]);
+    if has_ffmpeg {
+        assert!(out.status.success(), "{}", flat(&out.stderr));
+        assert!(std::fs::metadata(&mp4).expect("mp4 written").len() > 500);
+    } else {
+        // Without ffmpeg the command says how to get it or what to write instead.
+        assert_eq!(out.status.code(), Some(1));
+        assert!(flat(&out.stderr).contains("ffmpeg"), "{}", flat(&out.stderr));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

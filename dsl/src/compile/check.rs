@@ -194,19 +194,24 @@ fn position(bounds: [[f32; 2]; 2], what: &str, loc: &Loc, diags: &mut Diagnostic
             || x0.abs().max(x1.abs()) > limit[0]
             || y0.abs().max(y1.abs()) > limit[1]
     };
-    let [x0s, x1s, y0s, y1s] = [x0, x1, y0, y1].map(short);
-    // A random start is judged by the whole range its draws can reach.
-    let (starts, place) = if x0 == x1 && y0 == y1 {
-        ("starts", format!("at ({x0s}, {y0s})"))
-    } else {
-        ("can start", format!("(its draws reach {x0s}..{x1s}, {y0s}..{y1s})"))
+    // A random start is judged by the whole range its draws can reach. Written out only for a
+    // diagnostic: formatting numbers for every player would cost more than the check itself.
+    let describe = || {
+        let [x0s, x1s, y0s, y1s] = [x0, x1, y0, y1].map(short);
+        if x0 == x1 && y0 == y1 {
+            ("starts", format!("at ({x0s}, {y0s})"))
+        } else {
+            ("can start", format!("(its draws reach {x0s}..{x1s}, {y0s}..{y1s})"))
+        }
     };
     if beyond(RIM) {
+        let (starts, place) = describe();
         diags.push(
             Diagnostic::new(Code::OutOfRange, format!("{what} {starts} off the pitch {place}"), &loc.source, loc.span, "off the pitch")
                 .with_help("positions are in scenario units: x in [-1, 1] (goal lines), y in [-0.42, 0.42] (touchlines); the rim allows |x| <= 1.1, |y| <= 0.48"),
         );
     } else if beyond(LINES) {
+        let (starts, place) = describe();
         diags.push(Diagnostic::new(
             Code::OutsideLines,
             format!("{what} {starts} outside the lines {place}"),

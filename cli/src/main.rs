@@ -56,6 +56,8 @@ enum Command {
     /// Watch replays in the browser: serves a viewer page on localhost, or writes it as one
     /// self-contained HTML file.
     View(cmd::view::ViewArgs),
+    /// Play a scenario over and over, recompiling it and its scripts whenever a file changes.
+    Watch(cmd::watch::WatchArgs),
 }
 
 /// Everything a command can fail with.
@@ -168,6 +170,28 @@ pub(crate) enum CliError {
         reason: String,
     },
 
+    /// The scenario's scripts do not load (`tl::S001` …).
+    #[error(transparent)]
+    #[diagnostic(transparent)]
+    Build(touchline_dsl::BuildError),
+
+    /// A scenario script failed while playing (its rendered diagnostic, `tl::S005`/`tl::S006`).
+    #[error("a scenario script failed in episode {episode} at step {steps}:\n{message}")]
+    #[diagnostic(code(tl::cli::script))]
+    Script {
+        /// 0-based episode index.
+        episode: u64,
+        /// Steps played in that episode before the failure.
+        steps: u32,
+        /// The script's diagnostic.
+        message: String,
+    },
+
+    /// `touchline watch` could not start.
+    #[error(transparent)]
+    #[diagnostic(transparent)]
+    Watch(#[from] touchline_dsl::watch::WatchError),
+
     /// Writing to stdout failed.
     #[error("cannot write the output")]
     #[diagnostic(code(tl::cli::output))]
@@ -182,14 +206,25 @@ impl CliError {
             | CliError::Config { .. }
             | CliError::Syntax(_)
             | CliError::Read { .. }
-            | CliError::Replay { .. } => 2,
+            | CliError::Replay { .. }
+            | CliError::Build(_)
+            | CliError::Watch(_) => 2,
             CliError::Check { .. }
             | CliError::Unformatted { .. }
             | CliError::Engine { .. }
+            | CliError::Script { .. }
             | CliError::Output(_)
             | CliError::Write { .. }
             | CliError::Video { .. }
             | CliError::Serve { .. } => 1,
+        }
+    }
+
+    /// The error of a failed step: a script's diagnostic, or an engine bug.
+    pub(crate) fn step(info: &touchline_engine::StepInfo, source: EngineError) -> CliError {
+        match source {
+            EngineError::Script { message } => CliError::Script { episode: info.episode, steps: info.steps, message },
+            source => CliError::Engine { episode: info.episode, steps: info.steps, source },
         }
     }
 }
@@ -208,6 +243,7 @@ fn main() -> ExitCode {
         Command::List(args) => cmd::scenarios::run(&args),
         Command::Replay(args) => cmd::replay::run(&args),
         Command::View(args) => cmd::view::run(&args),
+        Command::Watch(args) => cmd::watch::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

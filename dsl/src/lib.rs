@@ -19,6 +19,7 @@
 //! ```
 #![deny(missing_docs)]
 
+mod build;
 mod compile;
 mod diag;
 pub mod diagnostic;
@@ -29,9 +30,15 @@ pub mod stdlib;
 mod suggest;
 pub mod syntax;
 
+pub mod script;
+pub mod watch;
+
 pub use compile::{Compiled, PRELUDE, check_file, compile, compile_file};
+
+pub use build::{BuildError, attach, build_env, build_env_with, script_dir};
 pub use diag::{JsonError, LoadError, render_plain};
 pub use diagnostic::{Code, Diagnostic, Diagnostics};
 pub use format::format_source;
 pub use load::{load, load_file, load_json};
 pub use print::scenario_to_tl;
+pub use watch::Watched;

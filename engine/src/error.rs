@@ -50,6 +50,13 @@ pub enum EngineError {
         /// What is wrong.
         reason: String,
     },
+    /// A script hook failed (a runtime error or an exhausted limit); the message names the
+    /// script, the hook and the line and column.
+    #[error("{message}")]
+    Script {
+        /// The rendered diagnostic.
+        message: String,
+    },
     /// `step` after the episode ended; call `reset` first.
     #[error("the episode has ended; call reset() before step()")]
     EpisodeOver,

@@ -45,7 +45,7 @@ pub mod rules;
 pub mod scenario;
 pub mod stats;
 
-pub use env::{Env, EnvConfig, Snapshot, StepInfo, StepOutcome};
+pub use env::{Env, EnvConfig, HookOutcome, HookView, Hooks, Snapshot, StepInfo, StepOutcome};
 pub use error::EngineError;
 pub use game::{Action, ActionSet, GameMode, Match};
 pub use geometry::Side;

@@ -68,6 +68,8 @@ impl Representation {
 #[derive(Clone, Debug)]
 pub(crate) struct EnvArgs {
     pub(crate) scenario: Scenario,
+    /// The scenario's scripts, compiled once and shared by every env built from these arguments.
+    pub(crate) scripts: touchline_dsl::script::Scripts,
     pub(crate) representation: Representation,
     pub(crate) config: EnvConfig,
     pub(crate) stacked: bool,
@@ -86,7 +88,14 @@ impl EnvArgs {
         stacked: bool,
         channel_dimensions: (usize, usize),
     ) -> PyResult<EnvArgs> {
-        let scenario = touchline_dsl::load(scenario).map_err(|e| crate::errors::scenario_error(py, &e))?;
+        let spec = scenario;
+        let scenario = touchline_dsl::load(spec).map_err(|e| crate::errors::scenario_error(py, &e))?;
+        let scripts = touchline_dsl::script::Scripts::compile(
+            &scenario,
+            &touchline_dsl::script_dir(spec),
+            touchline_dsl::script::ScriptOptions::default(),
+        )
+        .map_err(|e| crate::errors::script_errors(py, &e))?;
         let representation = Representation::parse(representation, channel_dimensions)?;
         let mut checkpoints = false;
         let mut scoring = false;
@@ -118,6 +127,7 @@ impl EnvArgs {
         }
         Ok(EnvArgs {
             scenario,
+            scripts,
             representation,
             config: EnvConfig { left_agents, right_agents, action_set, checkpoints },
             stacked,
@@ -146,7 +156,7 @@ pub(crate) struct EnvCore {
 
 impl EnvCore {
     pub(crate) fn new(args: &EnvArgs, seed: u64) -> Result<EnvCore, EngineError> {
-        let env = Env::with_config(args.scenario.clone(), args.config, seed)?;
+        let env = touchline_dsl::attach(&args.scripts, args.scenario.clone(), args.config, seed)?;
         let (shape, channels) = args.representation.frame();
         let frame_len: usize = if shape.is_empty() { 0 } else { shape.iter().product() };
         let m = env.num_controllers();

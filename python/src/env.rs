@@ -54,6 +54,8 @@ pub(crate) fn info_dict<'py>(py: Python<'py>, info: &StepInfo) -> PyResult<Bound
     d.set_item("game_mode", info.game_mode as u8)?;
     d.set_item("score_reward", info.score_reward)?;
     d.set_item("checkpoint_reward", info.checkpoint_reward)?;
+    d.set_item("script_reward", info.script_reward)?;
+    d.set_item("script_errors", info.script_errors)?;
     d.set_item("steps", info.steps)?;
     d.set_item("episode", info.episode)?;
     Ok(d)
@@ -168,6 +170,10 @@ impl PyEnv {
             let obs = self.observation(py, false)?;
             let rewards = PyArray1::from_slice(py, self.core.env.rewards());
             let info = info_dict(py, self.core.env.info())?;
+            let log = self.core.env.hook_log();
+            if !log.is_empty() {
+                info.set_item("script_log", log.to_vec())?;
+            }
             Ok((obs, rewards, outcome.terminated, outcome.truncated, info))
         })
     }

@@ -33,12 +33,25 @@ pub(crate) fn scenario_error(py: Python<'_>, err: &LoadError) -> PyErr {
     exc
 }
 
+/// Scripts of a scenario that failed to load: `ScenarioError` with the plain rendered diagnostics
+/// and the first one's code (`tl::S001` …).
+pub(crate) fn script_errors(py: Python<'_>, err: &touchline_dsl::script::ScriptErrors) -> PyErr {
+    use miette::Diagnostic;
+    let message = touchline_dsl::render_plain(err);
+    let exc = ScenarioError::new_err(message);
+    let code = err.errors.first().and_then(|e| e.code()).map(|c| c.to_string()).unwrap_or_default();
+    if let Err(e) = exc.value(py).setattr("code", code) {
+        return e;
+    }
+    exc
+}
+
 /// Engine errors: bad input is a `ValueError`, stepping a finished episode a `RuntimeError`, an
 /// invalid scenario a `ScenarioError`.
 pub(crate) fn engine_error(err: EngineError) -> PyErr {
     match err {
         EngineError::EpisodeOver => PyRuntimeError::new_err(err.to_string()),
-        EngineError::InvalidScenario { .. } => ScenarioError::new_err(err.to_string()),
+        EngineError::InvalidScenario { .. } | EngineError::Script { .. } => ScenarioError::new_err(err.to_string()),
         EngineError::InvalidSnapshot { .. } | EngineError::SnapshotScenario { .. } => {
             PyValueError::new_err(err.to_string())
         }

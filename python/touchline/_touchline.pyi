@@ -91,7 +91,8 @@ class Env:
 
         Returns:
             (observation, rewards (M,) float32, terminated, truncated, info) where info has
-            score [left, right], steps_left, game_mode, score_reward, checkpoint_reward, steps, episode.
+            score [left, right], steps_left, game_mode, score_reward, checkpoint_reward, script_reward,
+            script_errors, steps, episode, and script_log (lines scripts printed) when not empty.
 
         Raises:
             ValueError: wrong number of actions or an index outside the action set.

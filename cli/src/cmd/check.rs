@@ -31,6 +31,19 @@ pub(crate) fn run(args: &CheckArgs) -> Result<(), CliError> {
             }
             let _ = writeln!(stderr.lock(), "{:?}", miette::Report::new(d.clone()));
         }
+        if !diagnostics.has_errors() {
+            // The scenario compiles: its scripts must too (`tl::S001` … `tl::S004`).
+            let dir = touchline_dsl::script_dir(&file.to_string_lossy());
+            let scripts = touchline_dsl::compile_file(file)
+                .map(|c| touchline_dsl::script::Scripts::compile(&c.scenario, &dir, Default::default()).err());
+            if let Ok(Some(script_errors)) = scripts {
+                failed += 1;
+                for e in script_errors.errors {
+                    errors += 1;
+                    let _ = writeln!(stderr.lock(), "{:?}", miette::Report::new(e));
+                }
+            }
+        }
     }
     let n = args.files.len();
     let summary = format!(

@@ -8,6 +8,7 @@ pub(crate) mod run;
 pub(crate) mod scenarios;
 pub(crate) mod stats;
 pub(crate) mod view;
+pub(crate) mod watch;
 
 use std::io::{self, Write};
 use std::path::Path;

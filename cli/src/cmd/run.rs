@@ -12,7 +12,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 use serde::Serialize;
-use touchline_engine::{Action, ActionSet, Env, EnvConfig, Scenario};
+use touchline_engine::{Action, ActionSet, EnvConfig, Scenario};
 use touchline_render::replay::{Recorder, Replay};
 
 use super::stats::StatsLine;
@@ -96,7 +96,7 @@ impl Policy {
         }
     }
 
-    fn action_set(self) -> ActionSet {
+    pub(crate) fn action_set(self) -> ActionSet {
         match self {
             Policy::Builtin => ActionSet::V2,
             Policy::Idle | Policy::Random => ActionSet::Default,
@@ -109,7 +109,7 @@ impl Policy {
 const POLICY_SEED_OFFSET: u64 = 0x9E37_79B9_7F4A_7C15;
 
 /// A policy with its state.
-enum Agent {
+pub(crate) enum Agent {
     /// The same action every step.
     Fixed(Action),
     /// Uniform draws from `set`.
@@ -117,7 +117,7 @@ enum Agent {
 }
 
 impl Agent {
-    fn new(policy: Policy, seed: u64) -> Agent {
+    pub(crate) fn new(policy: Policy, seed: u64) -> Agent {
         match policy {
             Policy::Idle => Agent::Fixed(Action::Idle),
             Policy::Builtin => Agent::Fixed(Action::BuiltinAi),
@@ -129,7 +129,7 @@ impl Agent {
     }
 
     /// Writes one action per controller into `actions`.
-    fn act(&mut self, actions: &mut [Action]) {
+    pub(crate) fn act(&mut self, actions: &mut [Action]) {
         match self {
             Agent::Fixed(action) => actions.fill(*action),
             Agent::Random { rng, set } => {
@@ -237,14 +237,18 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     };
     let controllable = scenario.controllable_players();
     let expected_steps = u64::from(scenario.game_duration) + 1;
-    let mut env = Env::with_config(scenario, config, args.seed).map_err(|source| CliError::Config {
-        scenario: args.scenario.clone(),
-        help: format!(
-            "this scenario has {} controllable left and {} controllable right players; \
-             pass --left-agents and --right-agents within those numbers",
-            controllable[0], controllable[1]
-        ),
-        source,
+    let dir = touchline_dsl::script_dir(&args.scenario);
+    let mut env = touchline_dsl::build_env(scenario, &dir, config, args.seed).map_err(|e| match e {
+        touchline_dsl::BuildError::Engine(source) => CliError::Config {
+            scenario: args.scenario.clone(),
+            help: format!(
+                "this scenario has {} controllable left and {} controllable right players; \
+                 pass --left-agents and --right-agents within those numbers",
+                controllable[0], controllable[1]
+            ),
+            source,
+        },
+        other => CliError::Build(other),
     })?;
 
     let mut out = io::stdout().lock();
@@ -269,11 +273,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
         let mut reward = 0.0_f64;
         let outcome = loop {
             agent.act(&mut actions);
-            let outcome = env.step(&actions).map_err(|source| CliError::Engine {
-                episode: env.info().episode,
-                steps: env.info().steps,
-                source,
-            })?;
+            let outcome = env.step(&actions).map_err(|source| CliError::step(env.info(), source))?;
             if let Some(r) = &mut recorder {
                 r.record(&env, &actions);
             }

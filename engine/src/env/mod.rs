@@ -4,6 +4,7 @@
 mod config;
 mod control;
 mod end;
+mod hooks;
 mod snapshot;
 mod sticky;
 
@@ -11,6 +12,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 pub use config::EnvConfig;
+pub use hooks::{HookOutcome, HookView, Hooks};
 use snapshot::EnvState;
 pub use snapshot::Snapshot;
 pub use sticky::{Press, StickyState};
@@ -53,6 +55,10 @@ pub struct StepInfo {
     pub score_reward: f32,
     /// Checkpoint reward paid this step, summed over controllers.
     pub checkpoint_reward: f32,
+    /// Reward paid this step by the hooks' script terms, summed over controllers.
+    pub script_reward: f32,
+    /// Script failures absorbed this episode under the "warn" policy (each paid zero).
+    pub script_errors: u32,
     /// Steps taken this episode.
     pub steps: u32,
     /// 0-based episode index since the last seeding.
@@ -82,6 +88,12 @@ pub struct Env {
     fingerprint: u64,
     /// Everything that changes while the env plays (what a [`Snapshot`] saves).
     state: EnvState,
+    /// Script reward terms and end conditions, run outside the engine.
+    hooks: Option<Box<dyn Hooks>>,
+    /// Scratch: the actions taken in the last step (after anti-stalling), one per controller.
+    taken: Vec<Action>,
+    /// Scratch: the hooks' rewards of the last step, one per controller.
+    hook_rewards: Vec<f32>,
 }
 
 impl Env {
@@ -100,6 +112,30 @@ impl Env {
     /// [`EngineError::InvalidScenario`] for a bad scenario; [`EngineError::InvalidConfig`] when
     /// more players are to be controlled than a side has controllable players.
     pub fn with_config(scenario: Scenario, config: EnvConfig, seed: u64) -> Result<Env, EngineError> {
+        Env::build(scenario, config, seed, None)
+    }
+
+    /// An environment whose scenario's script terms (`RewardKind::Script`,
+    /// `EndCondition::Script`) run through `hooks`, reset to its first episode with `seed`.
+    /// `touchline_dsl::build_env` builds the rhai hooks of a scenario and calls this.
+    ///
+    /// # Errors
+    /// As [`Env::with_config`], and any error of the hooks' first [`Hooks::reset`].
+    pub fn with_hooks(
+        scenario: Scenario,
+        config: EnvConfig,
+        seed: u64,
+        hooks: Box<dyn Hooks>,
+    ) -> Result<Env, EngineError> {
+        Env::build(scenario, config, seed, Some(hooks))
+    }
+
+    fn build(
+        scenario: Scenario,
+        config: EnvConfig,
+        seed: u64,
+        hooks: Option<Box<dyn Hooks>>,
+    ) -> Result<Env, EngineError> {
         scenario.validate()?;
         let controllable = scenario.controllable_players();
         let mut agents = [config.left_agents, config.right_agents];
@@ -124,13 +160,14 @@ impl Env {
             .collect();
         let n = controllers.len();
         let game = Match::new(&scenario, 0, seed);
-        let reward_plan = RewardPlan::new(&scenario, &config)?;
+        let reward_plan = RewardPlan::new(&scenario, &config, hooks.is_some())?;
         let start = match &scenario.start_state {
             Some(bytes) => Some(Box::new(snapshot::start_match(&scenario, bytes)?)),
             None => None,
         };
-        if let Some(crate::scenario::EndCondition::Script { path }) =
-            scenario.end_when.iter().find(|c| matches!(c, crate::scenario::EndCondition::Script { .. }))
+        if hooks.is_none()
+            && let Some(crate::scenario::EndCondition::Script { path }) =
+                scenario.end_when.iter().find(|c| matches!(c, crate::scenario::EndCondition::Script { .. }))
         {
             return Err(EngineError::InvalidScenario {
                 reason: format!(
@@ -140,6 +177,9 @@ impl Env {
             });
         }
         let mut env = Env {
+            hooks,
+            taken: vec![Action::Idle; n],
+            hook_rewards: vec![0.0; n],
             reward_plan,
             start,
             fixed_control: [agents[0] == controllable[0], agents[1] == controllable[1]],
@@ -162,10 +202,14 @@ impl Env {
                 done: false,
                 score_diff: 0,
                 waiting_for_game: 0,
+                hook_error: None,
             },
         };
         env.fingerprint = env.compute_fingerprint();
         env.begin(0);
+        if let Some(e) = env.state.hook_error.take() {
+            return Err(e);
+        }
         Ok(env)
     }
 
@@ -195,6 +239,13 @@ impl Env {
     }
 
     fn begin(&mut self, episode: u64) {
+        if let Some(hooks) = self.hooks.as_mut()
+            && let Some(scenario) = hooks.poll_scenario()
+            && let Err(e) = self.swap_scenario(scenario)
+            && let Some(hooks) = self.hooks.as_mut()
+        {
+            hooks.scenario_refused(&e);
+        }
         self.state.episode = episode;
         self.state.fresh = true;
         self.state.game = match &self.start {
@@ -224,9 +275,63 @@ impl Env {
             game_mode: self.state.game.mode(),
             score_reward: 0.0,
             checkpoint_reward: 0.0,
+            script_reward: 0.0,
+            script_errors: 0,
             steps: 0,
             episode,
         };
+        self.state.hook_error = None;
+        if let Some(hooks) = self.hooks.as_mut() {
+            let view = HookView {
+                game: &self.state.game,
+                observations: &self.state.observations,
+                left_controllers: self.state.controllers.iter().filter(|c| c.side == Side::Left).count(),
+                actions: &[],
+                rewards: &self.state.rewards,
+                steps: 0,
+                steps_left: self.state.info.steps_left,
+                episode,
+                seed: self.state.seed,
+            };
+            self.state.hook_error = hooks.reset(&view).err();
+        }
+    }
+
+    /// Switches to `scenario` (from a watched source) for the episodes to come; refused, leaving
+    /// the env as it was, when it is invalid or gives a different number of controllers.
+    fn swap_scenario(&mut self, scenario: Scenario) -> Result<(), EngineError> {
+        scenario.validate()?;
+        let controllable = scenario.controllable_players();
+        let mut agents = [self.config.left_agents, self.config.right_agents];
+        for side in 0..2 {
+            if scenario.control_all_players && agents[side] == 1 {
+                agents[side] = controllable[side];
+            }
+        }
+        let (left, n) = (self.controller_span(Side::Left).1, self.state.controllers.len());
+        if agents[0] != left || agents[0] + agents[1] != n || agents[0] > controllable[0] || agents[1] > controllable[1]
+        {
+            return Err(EngineError::InvalidScenario {
+                reason: format!(
+                    "the edited scenario gives {} left and {} right controllers, the env has {left} and {}; \
+                     restart to change the number of agents",
+                    agents[0],
+                    agents[1],
+                    n - left
+                ),
+            });
+        }
+        let reward_plan = RewardPlan::new(&scenario, &self.config, self.hooks.is_some())?;
+        let start = match &scenario.start_state {
+            Some(bytes) => Some(Box::new(snapshot::start_match(&scenario, bytes)?)),
+            None => None,
+        };
+        self.reward_plan = reward_plan;
+        self.start = start;
+        self.fixed_control = [agents[0] == controllable[0], agents[1] == controllable[1]];
+        self.scenario = scenario;
+        self.fingerprint = self.compute_fingerprint();
+        Ok(())
     }
 
     /// First controller index and number of controllers of `side`.
@@ -273,10 +378,16 @@ impl Env {
         if self.state.done {
             return Err(EngineError::EpisodeOver);
         }
+        if let Some(e) = self.state.hook_error.take() {
+            // The hooks failed at reset: the episode cannot be scored.
+            self.state.done = true;
+            return Err(e);
+        }
         self.state.fresh = false;
         self.state.game.clear_events();
         for (i, &action) in actions.iter().enumerate() {
             let action = self.anti_stalling(i, action);
+            self.taken[i] = action;
             self.apply_action(i, action);
         }
         let mut ticks = 0;
@@ -337,6 +448,8 @@ impl Env {
             crate::geometry::coords::world_to_obs(glam::Vec2::new(ball.x, ball.y)),
         );
         let truncated = self.state.steps > self.scenario.game_duration;
+        let (hooks_end, script_reward, script_errors) = self.run_hooks()?;
+        let terminated = terminated || hooks_end;
         self.state.done = terminated || truncated;
         self.state.info = StepInfo {
             score,
@@ -344,10 +457,44 @@ impl Env {
             game_mode: self.state.game.mode(),
             score_reward: scoring,
             checkpoint_reward: checkpoint_total,
+            script_reward,
+            script_errors: self.state.info.script_errors + script_errors,
             steps: self.state.steps,
             episode: self.state.episode,
         };
         Ok(StepOutcome { terminated, truncated })
+    }
+
+    /// Runs the hooks after a step: adds their rewards and returns (end, reward paid, errors
+    /// absorbed). A hook error ends the episode and fails the step.
+    fn run_hooks(&mut self) -> Result<(bool, f32, u32), EngineError> {
+        let Some(hooks) = self.hooks.as_mut() else { return Ok((false, 0.0, 0)) };
+        self.hook_rewards.fill(0.0);
+        let view = HookView {
+            game: &self.state.game,
+            observations: &self.state.observations,
+            left_controllers: self.state.controllers.iter().filter(|c| c.side == Side::Left).count(),
+            actions: &self.taken,
+            rewards: &self.state.rewards,
+            steps: self.state.steps,
+            steps_left: (self.scenario.game_duration + 1).saturating_sub(self.state.steps),
+            episode: self.state.episode,
+            seed: self.state.seed,
+        };
+        match hooks.step(&view, &mut self.hook_rewards) {
+            Ok(outcome) => {
+                let mut total = 0.0;
+                for (r, h) in self.state.rewards.iter_mut().zip(&self.hook_rewards) {
+                    *r += h;
+                    total += h;
+                }
+                Ok((outcome.end, total, outcome.errors))
+            }
+            Err(e) => {
+                self.state.done = true;
+                Err(e)
+            }
+        }
     }
 
     /// GRF's anti-stalling rule (grf.md §5.4): after 20 steps waiting at a set piece every agent
@@ -438,9 +585,20 @@ impl Env {
         &self.state.observations
     }
 
-    /// Rewards of the last step, one per controller (scoring + checkpoints).
+    /// Rewards of the last step, one per controller (scoring + checkpoints + script terms).
     pub fn rewards(&self) -> &[f32] {
         &self.state.rewards
+    }
+
+    /// Messages of the hooks from the last reset or step (lines scripts printed, absorbed script
+    /// errors); empty without hooks.
+    pub fn hook_log(&self) -> &[String] {
+        self.hooks.as_ref().map_or(&[], |h| h.log())
+    }
+
+    /// Whether script hooks are attached.
+    pub fn has_hooks(&self) -> bool {
+        self.hooks.is_some()
     }
 
     /// Information about the last step.

@@ -40,6 +40,9 @@ pub(crate) struct EnvState {
     pub(super) score_diff: i32,
     /// GRF's anti-stalling counter: steps in a row that ended with a set piece pending.
     pub(super) waiting_for_game: u32,
+    /// The hooks failed at the last reset; the next step reports it (transient: not saved).
+    #[serde(skip)]
+    pub(super) hook_error: Option<EngineError>,
 }
 
 /// A saved moment of an episode; see [`Env::snapshot`] and [`Env::restore`].
@@ -48,6 +51,8 @@ pub struct Snapshot {
     fingerprint: u64,
     scenario: String,
     state: Box<EnvState>,
+    /// The hooks' state ([`super::Hooks::save`]); empty without hooks.
+    hooks: Vec<u8>,
 }
 
 /// FNV-1a over bytes: a fingerprint and checksum that is the same on every platform.
@@ -69,7 +74,7 @@ impl Snapshot {
     /// fingerprint, checksum) and the state in postcard's compact encoding. About 5–8 KiB for a
     /// full 11-v-11 match.
     pub fn to_bytes(&self) -> Vec<u8> {
-        let payload = postcard::to_allocvec(&(&self.scenario, &*self.state)).unwrap_or_default();
+        let payload = postcard::to_allocvec(&(&self.scenario, &*self.state, &self.hooks)).unwrap_or_default();
         let mut out = Vec::with_capacity(HEADER + payload.len());
         out.extend_from_slice(MAGIC);
         out.extend_from_slice(&Self::FORMAT_VERSION.to_le_bytes());
@@ -106,9 +111,9 @@ impl Snapshot {
         if fnv(payload) != checksum {
             return Err(bad("the checksum does not match: the bytes are truncated or corrupted".into()));
         }
-        let (scenario, state): (String, EnvState) =
+        let (scenario, state, hooks): (String, EnvState, Vec<u8>) =
             postcard::from_bytes(payload).map_err(|e| bad(format!("cannot decode the state: {e}")))?;
-        Ok(Snapshot { fingerprint, scenario, state: Box::new(state) })
+        Ok(Snapshot { fingerprint, scenario, state: Box::new(state), hooks })
     }
 }
 
@@ -143,6 +148,7 @@ impl Env {
             fingerprint: self.fingerprint,
             scenario: self.scenario.name.clone(),
             state: Box::new(self.state.clone()),
+            hooks: self.hooks.as_ref().map(|h| h.save()).unwrap_or_default(),
         }
     }
 
@@ -158,6 +164,9 @@ impl Env {
                 snapshot: snapshot.scenario.clone(),
                 env: self.scenario.name.clone(),
             });
+        }
+        if let Some(hooks) = self.hooks.as_mut() {
+            hooks.load(&snapshot.hooks)?;
         }
         self.state.clone_from(&snapshot.state);
         Ok(())

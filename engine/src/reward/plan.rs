@@ -28,9 +28,9 @@ impl RewardPlan {
     /// checkpoints are added only when the scenario has none).
     ///
     /// # Errors
-    /// [`EngineError::InvalidScenario`] for a script term (scripts need the hooks of
-    /// `touchline_dsl`) or more than one checkpoint term.
-    pub(crate) fn new(scenario: &Scenario, config: &EnvConfig) -> Result<RewardPlan, EngineError> {
+    /// [`EngineError::InvalidScenario`] for a script term when the env has no hooks (scripts
+    /// need the hooks of `touchline_dsl`) or more than one checkpoint term.
+    pub(crate) fn new(scenario: &Scenario, config: &EnvConfig, hooks: bool) -> Result<RewardPlan, EngineError> {
         let grf = CheckpointTerm { count: CHECKPOINT_COUNT, value: CHECKPOINT_REWARD, weight: 1.0 };
         if scenario.rewards.is_empty() {
             return Ok(RewardPlan { scoring: 1.0, checkpoints: config.checkpoints.then_some(grf) });
@@ -47,6 +47,8 @@ impl RewardPlan {
                     }
                     plan.checkpoints = Some(CheckpointTerm { count: *count, value: *value, weight: term.weight });
                 }
+                // The env's hooks pay script terms.
+                RewardKind::Script { .. } if hooks => {}
                 RewardKind::Script { path } => {
                     return Err(EngineError::InvalidScenario {
                         reason: format!(
@@ -72,7 +74,7 @@ mod tests {
     #[test]
     fn default_and_declared_terms() {
         let config = EnvConfig { checkpoints: true, ..EnvConfig::default() };
-        let plain = RewardPlan::new(&Scenario::default(), &config).unwrap();
+        let plain = RewardPlan::new(&Scenario::default(), &config, false).unwrap();
         assert_eq!(plain.scoring, 1.0);
         assert_eq!(plain.checkpoints.unwrap().count, 10);
         let s = Scenario {
@@ -82,7 +84,7 @@ mod tests {
             ],
             ..Scenario::default()
         };
-        let plan = RewardPlan::new(&s, &EnvConfig::default()).unwrap();
+        let plan = RewardPlan::new(&s, &EnvConfig::default(), false).unwrap();
         assert_eq!(plan.scoring, 2.0);
         assert_eq!(plan.checkpoints, Some(CheckpointTerm { count: 5, value: 0.2, weight: 0.5 }));
     }
@@ -93,6 +95,6 @@ mod tests {
             rewards: vec![RewardTerm { reward: RewardKind::Script { path: "x.rhai".into() }, weight: 1.0 }],
             ..Scenario::default()
         };
-        assert!(RewardPlan::new(&s, &EnvConfig::default()).unwrap_err().to_string().contains("x.rhai"));
+        assert!(RewardPlan::new(&s, &EnvConfig::default(), false).unwrap_err().to_string().contains("x.rhai"));
     }
 }

@@ -1,0 +1,137 @@
+//! `touchline watch FILE`: play episodes of a scenario file over and over while it is edited.
+//!
+//! The scenario (`.json` now, `.tl` once the language lands) and every script it names are
+//! watched ([`touchline_dsl::Watched`]); each change is recompiled at once and its diagnostics are
+//! shown on stderr; the next episode plays the new version, or the last good one if the change did
+//! not compile. One line per episode on stdout.
+
+use std::io::{self, Write};
+use std::time::Duration;
+
+use clap::Args;
+use miette::{Diagnostic, GraphicalReportHandler};
+use touchline_dsl::Watched;
+use touchline_dsl::script::{ErrorPolicy, ScriptOptions};
+use touchline_dsl::watch::WatchEvent;
+use touchline_engine::{Action, EngineError, EnvConfig};
+
+use super::run::{Agent, Policy};
+use crate::CliError;
+
+/// Arguments of `touchline watch`.
+#[derive(Debug, Args)]
+pub(crate) struct WatchArgs {
+    /// The scenario file: a compiled `.json` scenario (or a `.tl` source).
+    scenario: String,
+
+    /// Stop after this many episodes (default: play until interrupted).
+    #[arg(long)]
+    episodes: Option<u64>,
+
+    /// Seed of the environment and of the random policy.
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+
+    /// Who chooses the controlled players' actions.
+    #[arg(long, value_enum, default_value_t = Policy::Random)]
+    policy: Policy,
+
+    /// Left-team players the agents control.
+    #[arg(long, default_value_t = 1)]
+    left_agents: usize,
+
+    /// Right-team players the agents control.
+    #[arg(long, default_value_t = 0)]
+    right_agents: usize,
+
+    /// Pause between episodes, in milliseconds.
+    #[arg(long, default_value_t = 0)]
+    pause_ms: u64,
+
+    /// A script failing during a step pays zero and is counted, instead of ending the episode.
+    #[arg(long)]
+    warn_script_errors: bool,
+}
+
+fn render(diagnostic: &dyn Diagnostic) -> String {
+    let mut out = String::new();
+    if GraphicalReportHandler::new().render_report(&mut out, diagnostic).is_err() {
+        out = diagnostic.to_string();
+    }
+    out
+}
+
+/// Runs `touchline watch`.
+pub(crate) fn run(args: &WatchArgs) -> Result<(), CliError> {
+    let on_error = if args.warn_script_errors { ErrorPolicy::Warn } else { ErrorPolicy::Raise };
+    let watched = Watched::new(&args.scenario, ScriptOptions { on_error, ..ScriptOptions::default() })?;
+    watched.on_event(|event| match event {
+        WatchEvent::Reloaded { generation } => {
+            eprintln!("reloaded: version {generation} plays from the next episode");
+        }
+        WatchEvent::Failed(error) => {
+            eprintln!("{}\nthe last good version keeps playing", render(*error));
+        }
+        WatchEvent::Refused(error) => eprintln!("not applied: {error}"),
+        _ => {}
+    });
+    let config = EnvConfig {
+        left_agents: args.left_agents,
+        right_agents: args.right_agents,
+        action_set: args.policy.action_set(),
+        checkpoints: false,
+    };
+    let mut env = watched.env(config, args.seed).map_err(|source| CliError::Config {
+        scenario: args.scenario.clone(),
+        help: "pass --left-agents and --right-agents within the scenario's controllable players".into(),
+        source,
+    })?;
+    eprintln!("watching {} and its scripts; edit them and save", args.scenario);
+    let mut agent = Agent::new(args.policy, args.seed);
+    let mut actions = vec![Action::Idle; env.num_controllers()];
+    let mut out = io::stdout().lock();
+    let mut episode = 0_u64;
+    while args.episodes.is_none_or(|n| episode < n) {
+        if episode > 0 {
+            env.reset();
+        }
+        let generation = watched.generation();
+        let mut reward = 0.0_f64;
+        let failed = loop {
+            agent.act(&mut actions);
+            match env.step(&actions) {
+                Ok(outcome) => {
+                    reward += f64::from(env.rewards()[0]);
+                    for line in env.hook_log() {
+                        eprintln!("{line}");
+                    }
+                    if outcome.terminated || outcome.truncated {
+                        break None;
+                    }
+                }
+                Err(EngineError::Script { message }) => break Some(message),
+                Err(source) => return Err(CliError::step(env.info(), source)),
+            }
+        };
+        let info = env.info();
+        match failed {
+            None => writeln!(
+                out,
+                "episode {episode} (version {generation}): score {}-{}, {} steps, return {reward:.3}, {} script errors",
+                info.score[0], info.score[1], info.steps, info.script_errors
+            )?,
+            Some(message) => {
+                writeln!(out, "episode {episode} (version {generation}): a script failed at step {}", info.steps)?;
+                eprintln!("{message}");
+                // Give the user time to fix it rather than failing thousands of times a second.
+                std::thread::sleep(Duration::from_millis(500));
+            }
+        }
+        out.flush()?;
+        if args.pause_ms > 0 {
+            std::thread::sleep(Duration::from_millis(args.pause_ms));
+        }
+        episode += 1;
+    }
+    Ok(())
+}

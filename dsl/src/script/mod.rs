@@ -1,0 +1,327 @@
+//! Reward terms and end conditions written in [rhai](https://rhai.rs), run by the env through the
+//! engine's [`Hooks`](touchline_engine::Hooks) trait.
+//!
+//! A scenario names scripts (`reward script "shaping/possession.rhai" weight 0.1`,
+//! `end when script "ends/ball_lost.rhai"`; paths relative to the scenario file). Each script is
+//! compiled once, at load ([`Scripts::compile`]), and its hooks are called by name:
+//!
+//! - a **reward script** defines `fn reward(s)`, called after every step once per team that has
+//!   agents, in that team's frame. It returns a number (paid to each of the team's agents) or an
+//!   array with one number per agent (in the order of `s.controlled`). The scenario's weight
+//!   multiplies it.
+//! - an **end script** defines `fn end(s)`, called after every step in the left team's frame; it
+//!   returns `true` to end (terminate) the episode.
+//! - either may define `fn reset(s)`, called at the start of each episode (e.g. to fill `memory`).
+//!
+//! `s` is the read-only state (the getters are in the table below: ball, players,
+//! score, game mode, steps left, the agents' players and actions, `s.prev` the previous step).
+//! `memory` is an object map each script keeps for the episode (emptied at reset, saved in env
+//! snapshots), visible inside the hook functions (pass it to helper functions as an argument).
+//! The top level of a script may define `fn`s and `const`s only.
+//!
+//! ```rhai
+//! // A possession bonus: 0.001 per step the team has the ball.
+//! fn reward(s) {
+//!     if s.ball_owned_team == 0 { 0.001 } else { 0.0 }
+//! }
+//! ```
+//!
+//! Sandbox ([`Limits`]): each call has an operation budget, a call-depth limit and size limits on
+//! strings, arrays and maps; variables must be declared (strict variables, checked when the script
+//! compiles); there is no `import`, no `eval`, no clock, no randomness and no file or network
+//! access. `print` and `debug` lines go to the env's log ([`Env::hook_log`](touchline_engine::Env::hook_log)).
+//!
+//! Errors are [`ScriptError`] diagnostics `tl::S001` … `tl::S006`. When a hook fails during a
+//! step, [`ErrorPolicy`] decides: fail the step (the default), or pay zero for that term, log
+//! the error and count it in `StepInfo::script_errors`.
+//!
+//! ## State API (`s`)
+//!
+//! Getters named after GRF's raw observation (grf.md §3.1).
+//!
+//! Frame and units, as the observation: the team's own frame, GRF-normalised (x ∈ [-1, 1] from the
+//! team's own goal to the opponents' goal, y ∈ [-0.42, 0.42], the ball's z in metres); `left_team`
+//! is always the script's own team. A reward hook is called once per team that has agents, in that
+//! team's frame; an end hook once per step, in the left team's frame.
+//!
+//! | getter | value |
+//! |---|---|
+//! | `s.ball`, `s.ball_direction`, `s.ball_rotation` | `[x, y, z]` floats (direction: movement per step) |
+//! | `s.ball_owned_team` | -1 nobody, 0 own team, 1 opponents |
+//! | `s.ball_owned_player` | index in the owner's team, or -1 |
+//! | `s.left_team`, `s.right_team` | positions, array of `[x, y]` (own team, opponents) |
+//! | `s.left_team_direction`, `s.right_team_direction` | movement per step, array of `[dx, dy]` |
+//! | `s.left_team_tired_factor`, `s.right_team_tired_factor` | fatigue in [0, 0.99] |
+//! | `s.left_team_yellow_card`, `s.right_team_yellow_card` | booked (bools) |
+//! | `s.left_team_active`, `s.right_team_active` | still on the pitch (false once sent off) |
+//! | `s.left_team_roles`, `s.right_team_roles` | role numbers 0 GK … 9 CF (GRF's order) |
+//! | `s.score` | `[own goals, opponents' goals]` |
+//! | `s.game_mode` | 0 normal, 1 kickoff, 2 goal kick, 3 free kick, 4 corner, 5 throw-in, 6 penalty |
+//! | `s.steps`, `s.steps_left` | steps taken this episode, steps left |
+//! | `s.episode` | 0-based episode index since seeding |
+//! | `s.side` | `"left"` or `"right"`: which team this view belongs to |
+//! | `s.active`, `s.designated` | the first agent's player and the team's designated player (-1 none) |
+//! | `s.controlled` | the players the team's agents drive, one index per agent |
+//! | `s.actions` | the actions those agents just took, GRF names (`"short_pass"`, …); empty at reset |
+//! | `s.sticky_actions` | the first agent's 10 sticky-action flags |
+//! | `s.prev` | the same view one step earlier, or `()` at reset |
+//!
+//! Function: `f32(x)` rounds a float to single precision, as the engine computes.
+
+mod api;
+mod diag;
+mod engine;
+mod hooks;
+mod memory;
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use miette::{Diagnostic, NamedSource};
+use rhai::{AST, Dynamic, Engine, Map, Scope};
+use thiserror::Error;
+use touchline_engine::Scenario;
+use touchline_engine::scenario::{EndCondition, RewardKind};
+
+pub use diag::ScriptError;
+pub use engine::Limits;
+pub use hooks::ScriptHooks;
+
+/// What a failing hook does to the step.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ErrorPolicy {
+    /// The step fails with the diagnostic ([`EngineError::Script`](touchline_engine::EngineError::Script)),
+    /// and the episode is over.
+    #[default]
+    Raise,
+    /// The term pays zero (an end script does not end the episode), the diagnostic goes to the log
+    /// and `StepInfo::script_errors` counts it.
+    Warn,
+}
+
+/// How scripts run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ScriptOptions {
+    /// Limits of each hook call.
+    pub limits: Limits,
+    /// What a failing hook does.
+    pub on_error: ErrorPolicy,
+}
+
+/// Every load error of a scenario's scripts, reported at once.
+#[derive(Debug, Error, Diagnostic)]
+#[error("{} script error{} in the scenario", errors.len(), if errors.len() == 1 { "" } else { "s" })]
+pub struct ScriptErrors {
+    /// One diagnostic per problem.
+    #[related]
+    pub errors: Vec<ScriptError>,
+}
+
+/// What a script is for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Role {
+    Reward { weight: f32 },
+    End,
+}
+
+impl Role {
+    fn hook(self) -> &'static str {
+        match self {
+            Role::Reward { .. } => "reward",
+            Role::End => "end",
+        }
+    }
+}
+
+/// One compiled script.
+#[derive(Debug)]
+pub(crate) struct Script {
+    /// The path as the scenario wrote it.
+    pub(crate) path: String,
+    pub(crate) text: String,
+    pub(crate) ast: AST,
+    /// The top level's constants, put in each call's scope.
+    pub(crate) constants: Vec<(String, Dynamic)>,
+    pub(crate) role: Role,
+    pub(crate) has_reset: bool,
+}
+
+impl Script {
+    pub(crate) fn source(&self) -> NamedSource<String> {
+        NamedSource::new(&self.path, self.text.clone()).with_language("rhai")
+    }
+}
+
+#[derive(Debug)]
+pub(crate) struct ScriptSet {
+    pub(crate) scripts: Vec<Script>,
+    pub(crate) options: ScriptOptions,
+    pub(crate) files: Vec<PathBuf>,
+}
+
+/// A scenario's scripts, compiled once; cheap to clone and shared by every env built from it
+/// (each env gets its own [`ScriptHooks`] with its own `memory`).
+#[derive(Clone, Debug)]
+pub struct Scripts {
+    pub(crate) set: Arc<ScriptSet>,
+}
+
+impl Scripts {
+    /// Reads and compiles every script `scenario` names (reward terms, then end conditions), with
+    /// paths relative to `dir` (the scenario file's folder).
+    ///
+    /// # Errors
+    /// Every problem at once: unreadable files (`tl::S001`), syntax (`tl::S002`), a missing or
+    /// wrong hook (`tl::S003`), a top level that is not only `fn`s and `const`s (`tl::S004`).
+    pub fn compile(scenario: &Scenario, dir: &Path, options: ScriptOptions) -> Result<Scripts, ScriptErrors> {
+        let mut wanted = Vec::new();
+        for term in &scenario.rewards {
+            if let RewardKind::Script { path } = &term.reward {
+                wanted.push((path.clone(), Role::Reward { weight: term.weight }));
+            }
+        }
+        for end in &scenario.end_when {
+            if let EndCondition::Script { path } = end {
+                wanted.push((path.clone(), Role::End));
+            }
+        }
+        let mut scripts = Vec::new();
+        let mut errors = Vec::new();
+        let mut files = Vec::new();
+        for (path, role) in wanted {
+            let file = dir.join(&path);
+            files.push(file.clone());
+            let text = match std::fs::read_to_string(&file) {
+                Ok(text) => text,
+                Err(source) => {
+                    errors.push(ScriptError::Unreadable { path: file.display().to_string(), source });
+                    continue;
+                }
+            };
+            match compile_text(&path, text, role, &options) {
+                Ok(script) => scripts.push(script),
+                Err(e) => errors.push(*e),
+            }
+        }
+        if errors.is_empty() {
+            Ok(Scripts { set: Arc::new(ScriptSet { scripts, options, files }) })
+        } else {
+            Err(ScriptErrors { errors })
+        }
+    }
+
+    /// Compiles one script from text (`path` names it in diagnostics): a reward script with
+    /// `weight` when `weight` is `Some`, else an end script. For tests, benchmarks and tools.
+    ///
+    /// # Errors
+    /// As [`Scripts::compile`].
+    pub fn from_text(
+        path: &str,
+        text: &str,
+        weight: Option<f32>,
+        options: ScriptOptions,
+    ) -> Result<Scripts, Box<ScriptError>> {
+        let role = weight.map_or(Role::End, |weight| Role::Reward { weight });
+        let script = compile_text(path, text.to_owned(), role, &options)?;
+        Ok(Scripts { set: Arc::new(ScriptSet { scripts: vec![script], options, files: Vec::new() }) })
+    }
+
+    /// Whether there are no scripts.
+    pub fn is_empty(&self) -> bool {
+        self.set.scripts.is_empty()
+    }
+
+    /// The script files read (resolved paths), for watching.
+    pub fn files(&self) -> &[PathBuf] {
+        &self.set.files
+    }
+
+    /// Fresh hooks for one env (empty `memory`).
+    pub fn hooks(&self) -> ScriptHooks {
+        ScriptHooks::new(Arc::clone(&self.set))
+    }
+}
+
+/// The scope every hook call sees: `memory`, then the script's constants.
+pub(crate) fn base_scope(script: &Script) -> Scope<'static> {
+    let mut scope = Scope::new();
+    scope.push("memory", Map::new());
+    for (name, value) in &script.constants {
+        scope.push_constant_dynamic(name.clone(), value.clone());
+    }
+    scope
+}
+
+/// Compiles `text`: a first, non-strict pass runs the top level to collect its constants; the
+/// second pass compiles strictly with `memory` and those constants declared.
+fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -> Result<Script, Box<ScriptError>> {
+    let sink = engine::PrintSink::default();
+    let src = || NamedSource::new(path, text.clone()).with_language("rhai");
+    let syntax = |e: rhai::ParseError| {
+        Box::new(ScriptError::Syntax {
+            path: path.to_owned(),
+            message: e.err_type().to_string(),
+            src: src(),
+            span: diag::span_at(&text, e.position()),
+        })
+    };
+    let loose = engine::sandboxed(&options.limits, false, &sink);
+    let first = loose.compile(&text).map_err(syntax)?;
+    let mut top = Scope::new();
+    top.push("memory", Map::new());
+    if let Err(e) = loose.run_ast_with_scope(&mut top, &first) {
+        return Err(Box::new(ScriptError::TopLevel {
+            path: path.to_owned(),
+            message: format!("the top level fails: {e}"),
+            src: src(),
+            span: diag::span_at(&text, e.position()),
+        }));
+    }
+    let mut constants = Vec::new();
+    for (name, constant, value) in top.iter() {
+        if name == "memory" {
+            continue;
+        }
+        if !constant {
+            let at = text.find(&format!("let {name}")).unwrap_or(0);
+            return Err(Box::new(ScriptError::TopLevel {
+                path: path.to_owned(),
+                message: format!("`let {name}` at the top level would keep state across episodes"),
+                src: src(),
+                span: (at, 4 + name.len()).into(),
+            }));
+        }
+        constants.push((name.to_owned(), value));
+    }
+    let strict: Engine = engine::sandboxed(&options.limits, true, &sink);
+    let mut scope = Scope::new();
+    scope.push("memory", Map::new());
+    for (name, value) in &constants {
+        scope.push_constant_dynamic(name.clone(), value.clone());
+    }
+    let ast = strict.compile_with_scope(&scope, &text).map_err(syntax)?;
+    let hook = role.hook();
+    let arity =
+        |name: &str| ast.iter_functions().filter(|f| f.name == name).map(|f| f.params.len()).collect::<Vec<_>>();
+    let found = arity(hook);
+    if !found.contains(&1) {
+        let help = match found.first() {
+            Some(n) => format!("`{hook}` takes {n} parameters; it must take one, the state: `fn {hook}(s) {{ … }}`"),
+            None if matches!(role, Role::Reward { .. }) => {
+                "a reward script defines `fn reward(s)` returning a number, or an array with one number per agent"
+                    .to_owned()
+            }
+            None => "an end-condition script defines `fn end(s)` returning true to end the episode".to_owned(),
+        };
+        return Err(Box::new(ScriptError::MissingHook { path: path.to_owned(), hook, help }));
+    }
+    let resets = arity("reset");
+    if !resets.is_empty() && !resets.contains(&1) {
+        return Err(Box::new(ScriptError::MissingHook {
+            path: path.to_owned(),
+            hook: "reset",
+            help: "`reset` must take one parameter, the state: `fn reset(s) { … }`".to_owned(),
+        }));
+    }
+    Ok(Script { path: path.to_owned(), text, ast, constants, role, has_reset: !resets.is_empty() })
+}

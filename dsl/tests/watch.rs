@@ -1,0 +1,93 @@
+//! Hot reload (issue 5): a watched scenario follows edits of its script between episodes; a broken
+//! edit is reported and never reaches a step; a save by rename is seen.
+
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use touchline_dsl::script::ScriptOptions;
+use touchline_dsl::watch::WatchEvent;
+use touchline_dsl::{Watched, load};
+use touchline_engine::scenario::{RewardKind, RewardTerm};
+use touchline_engine::{Action, EnvConfig};
+
+fn folder() -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("touchline-watch-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn script(value: &str) -> String {
+    format!("fn reward(s) {{ {value} }}\n")
+}
+
+/// Waits until `f` holds (the watcher works on its own thread), for at most 20 s.
+fn eventually(what: &str, mut f: impl FnMut() -> bool) {
+    let start = Instant::now();
+    while !f() {
+        assert!(start.elapsed() < Duration::from_secs(20), "timed out waiting for {what}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+fn write_atomically(path: &Path, text: &str) {
+    // What many editors do: write a temporary file, then rename it over the original.
+    let tmp = path.with_extension("rhai.swp");
+    std::fs::write(&tmp, text).unwrap();
+    std::fs::rename(&tmp, path).unwrap();
+}
+
+#[test]
+fn the_env_follows_edits_and_keeps_the_last_good_version() {
+    let dir = folder();
+    let mut scenario = load("academy_empty_goal_close").unwrap();
+    scenario.rewards = vec![RewardTerm { reward: RewardKind::Script { path: "r.rhai".into() }, weight: 1.0 }];
+    let spec = dir.join("scenario.json");
+    std::fs::write(&spec, serde_json::to_string(&scenario).unwrap()).unwrap();
+    let file = dir.join("r.rhai");
+    std::fs::write(&file, script("1.0")).unwrap();
+
+    let watched = Watched::new(spec.to_str().unwrap(), ScriptOptions::default()).unwrap();
+    let failures = Arc::new(Mutex::new(Vec::new()));
+    let seen = Arc::clone(&failures);
+    watched.on_event(move |event| {
+        if let WatchEvent::Failed(error) = event {
+            seen.lock().unwrap().push(touchline_dsl::render_plain(*error));
+        }
+    });
+    let mut env = watched.env(EnvConfig::default(), 0).unwrap();
+    let reward = |env: &mut touchline_engine::Env| {
+        env.step(&[Action::Idle]).unwrap();
+        env.rewards()[0]
+    };
+    assert_eq!(reward(&mut env), 1.0);
+
+    // An edit applies from the next reset, not in the middle of the episode.
+    std::fs::write(&file, script("2.0")).unwrap();
+    eventually("the edit to compile", || watched.generation() == 2);
+    assert_eq!(reward(&mut env), 1.0, "the running episode keeps its version");
+    env.reset();
+    assert_eq!(reward(&mut env), 2.0);
+
+    // A broken edit is reported and the last good version keeps playing.
+    std::fs::write(&file, "fn reward(s) { let = ; }").unwrap();
+    eventually("the broken edit to be reported", || !failures.lock().unwrap().is_empty());
+    assert!(failures.lock().unwrap()[0].contains("tl::S002"));
+    env.reset();
+    assert_eq!(reward(&mut env), 2.0);
+    assert_eq!(watched.generation(), 2);
+
+    // Fixed by a save-by-rename (delete + re-create at the same path).
+    write_atomically(&file, &script("3.0"));
+    eventually("the fix to compile", || watched.generation() == 3);
+    env.reset();
+    assert_eq!(reward(&mut env), 3.0);
+
+    // The scenario file itself is watched too: a new weight.
+    scenario.rewards[0].weight = 10.0;
+    std::fs::write(&spec, serde_json::to_string(&scenario).unwrap()).unwrap();
+    eventually("the scenario edit to compile", || watched.generation() == 4);
+    env.reset();
+    assert_eq!(reward(&mut env), 30.0);
+}

@@ -105,3 +105,11 @@ fn every_grf_scenario_config_key_is_accepted() {
     let printed = touchline_dsl::scenario_to_tl(s);
     assert_eq!(touchline_dsl::compile(&printed, "p.tl").unwrap().scenario, *s);
 }
+
+#[test]
+fn difficulty_and_right_team_difficulty_are_one_key() {
+    let text = "scenario s {\n  extends academy_empty_goal\n  difficulty 0.2\n  right_team_difficulty 0.3\n}\n";
+    let err = touchline_dsl::compile(text, "s.tl").unwrap_err();
+    let codes: Vec<&str> = err.items.iter().map(|d| d.code.as_str()).collect();
+    assert_eq!(codes, ["tl::E110"]);
+}

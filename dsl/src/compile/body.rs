@@ -70,6 +70,8 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             StatementKind::Team(t) => format!("team {}", side_name(t.side.value)),
             StatementKind::End(_) => "end when".to_owned(),
             StatementKind::StartFrom(_) => "start from".to_owned(),
+            // `difficulty` is another name for `right_team_difficulty`: giving both is a duplicate.
+            StatementKind::Setting { key, .. } if key.value == "difficulty" => "right_team_difficulty".to_owned(),
             StatementKind::Setting { key, .. } => key.value.clone(),
             StatementKind::Require { .. } | StatementKind::Reward { .. } => String::new(),
         };

@@ -79,6 +79,8 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
             EndCondition::Steps(n) => format!("steps >= {n}"),
             EndCondition::BallIn(r) => format!("ball in {}", region(r)),
             EndCondition::Script { path } => format!("script \"{path}\""),
+            // Printed by the condition language's printer once it lands (issue 9).
+            EndCondition::When(c) => format!("{c:?}"),
         }));
         if conditions.is_empty() {
             // No condition at all: only the time limit ends the episode.

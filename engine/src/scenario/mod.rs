@@ -7,12 +7,16 @@
 //! The scenario language compiles `.tl` text into this value; a compiled scenario is this value
 //! serialised to JSON.
 
+mod behaviour;
+mod condition;
 mod placement;
 mod random;
 mod terms;
 
 use serde::{Deserialize, Serialize};
 
+pub use behaviour::{Behaviour, PassKind, Stage};
+pub use condition::{Comparison, Condition, Owner, Target};
 pub use placement::{Body, MAX_PLACEMENT_TRIES, Placement, Require};
 pub use random::{Distribution, PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Region, Sample, Spot};
 pub use terms::{EndCondition, RewardKind, RewardTerm};
@@ -134,6 +138,10 @@ pub struct PlayerEntry {
     /// Whether an agent may ever control this player (default true).
     #[serde(default = "yes")]
     pub controllable: bool,
+    /// What the player does instead of following the built-in AI while no agent controls him:
+    /// stages played in order (empty: the built-in AI). `.tl`: `CB at (…) does press`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub behaviour: Vec<Stage>,
 }
 
 fn yes() -> bool {
@@ -150,7 +158,7 @@ fn is_default_seed(seed: &u64) -> bool {
 impl PlayerEntry {
     /// A non-lazy, controllable player.
     pub fn new(role: Role, x: f32, y: f32) -> PlayerEntry {
-        PlayerEntry { role, x, y, random: None, lazy: false, controllable: true }
+        PlayerEntry { role, x, y, random: None, lazy: false, controllable: true, behaviour: Vec::new() }
     }
 }
 
@@ -244,6 +252,9 @@ impl Scenario {
                 return bad(format!("{side} team has {keepers} goalkeepers; exactly one is required"));
             }
             for (i, p) in team.iter().enumerate() {
+                if !p.behaviour.is_empty() {
+                    return bad(format!("{side} player {i}: behaviours are not played yet"));
+                }
                 if !on_pitch(p.x, p.y) {
                     return bad(format!("{side} player {i} ({}) at ({}, {}) is off the pitch", p.role, p.x, p.y));
                 }
@@ -279,8 +290,12 @@ impl Scenario {
             t.check().map_err(|reason| EngineError::InvalidScenario { reason })?;
         }
         for c in &self.end_when {
-            if let EndCondition::BallIn(region) = c {
-                region.check().map_err(|reason| EngineError::InvalidScenario { reason })?;
+            match c {
+                EndCondition::BallIn(region) => {
+                    region.check().map_err(|reason| EngineError::InvalidScenario { reason })?;
+                }
+                EndCondition::When(_) => return bad("`end when` conditions are not evaluated yet".into()),
+                _ => {}
             }
         }
         Ok(())

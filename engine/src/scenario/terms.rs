@@ -57,6 +57,9 @@ pub enum EndCondition {
         /// Script path, relative to the scenario file.
         path: String,
     },
+    /// A condition of the condition language holds (global frame; `Target::Me` and
+    /// `Condition::Done` are not allowed here).
+    When(super::Condition),
 }
 
 impl RewardTerm {

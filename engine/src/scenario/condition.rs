@@ -1,0 +1,141 @@
+//! Conditions: the small expression language shared by player behaviours (`do A until COND then
+//! B`) and episode-end conditions (`end when COND`). Plain serde data; the engine evaluates them
+//! against the match (see `crate::behaviour`).
+//!
+//! **Frames.** Points and regions in a condition are read in a frame chosen by where the condition
+//! is used: in a behaviour, the frame of the behaving player's team (own goal at x = -1, as player
+//! positions are written); in `end when`, the global frame (the left team attacks +x). Players and
+//! sides are absolute (`left`, `right`, player index in the team's list).
+
+use serde::{Deserialize, Serialize};
+
+use super::random::Region;
+use crate::game::GameMode;
+use crate::geometry::Side;
+
+/// Something on the pitch a condition or behaviour refers to.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum Target {
+    /// The ball.
+    Ball,
+    /// The player whose behaviour this is (only meaningful inside a behaviour; `end when`
+    /// conditions may not use it).
+    Me,
+    /// Player `i` (index in the scenario's list) of the left team.
+    Left(usize),
+    /// Player `i` of the right team.
+    Right(usize),
+    /// A fixed point `[x, y]`, normalised units, in the frame of use (see the module docs).
+    Point([f32; 2]),
+}
+
+/// How two numbers compare.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Comparison {
+    /// `<`
+    Lt,
+    /// `<=`
+    Le,
+    /// `>`
+    Gt,
+    /// `>=`
+    Ge,
+    /// `==`
+    Eq,
+    /// `!=`
+    Ne,
+}
+
+impl Comparison {
+    /// Whether `lhs OP rhs` holds.
+    pub fn holds(self, lhs: f32, rhs: f32) -> bool {
+        match self {
+            Comparison::Lt => lhs < rhs,
+            Comparison::Le => lhs <= rhs,
+            Comparison::Gt => lhs > rhs,
+            Comparison::Ge => lhs >= rhs,
+            Comparison::Eq => lhs == rhs,
+            Comparison::Ne => lhs != rhs,
+        }
+    }
+
+    /// The operator as written in `.tl` text.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Comparison::Lt => "<",
+            Comparison::Le => "<=",
+            Comparison::Gt => ">",
+            Comparison::Ge => ">=",
+            Comparison::Eq => "==",
+            Comparison::Ne => "!=",
+        }
+    }
+}
+
+/// Who has the ball at his feet.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum Owner {
+    /// Nobody (the ball is loose or in flight).
+    Nobody,
+    /// A player of this team.
+    Team(Side),
+    /// This player (`Target::Me`, `Target::Left(i)` or `Target::Right(i)`).
+    Player(Target),
+}
+
+/// A condition on the state of the match. Evaluated after every tick for behaviours and after
+/// every env step for end conditions.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum Condition {
+    /// Every condition holds (`A and B`).
+    All(Vec<Condition>),
+    /// At least one holds (`A or B`).
+    Any(Vec<Condition>),
+    /// The condition does not hold (`not A`).
+    Not(Box<Condition>),
+    /// `distance(a, b) OP metres`: the distance on the pitch between two targets, in metres.
+    Distance {
+        /// First target.
+        a: Target,
+        /// Second target.
+        b: Target,
+        /// Comparison.
+        op: Comparison,
+        /// Right-hand side (m).
+        metres: f32,
+    },
+    /// `WHAT in REGION`: the target (ball or a player) is inside the region (frame of use).
+    In {
+        /// What must be inside.
+        what: Target,
+        /// The region.
+        region: Region,
+    },
+    /// `owner is …`: who has the ball.
+    Owner(Owner),
+    /// `game_mode is corner`: the current game mode (restart being taken, or normal play).
+    Mode(GameMode),
+    /// `steps OP N`: env steps taken in the episode (10 ticks each).
+    Steps {
+        /// Comparison.
+        op: Comparison,
+        /// Right-hand side (steps).
+        steps: u32,
+    },
+    /// `score(left) OP N`: goals of a team.
+    Score {
+        /// Whose goals.
+        side: Side,
+        /// Comparison.
+        op: Comparison,
+        /// Right-hand side (goals).
+        goals: u32,
+    },
+    /// `done`: the behaviour stage this condition ends has finished by itself (arrived at its
+    /// point, made its pass or shot). Only meaningful inside a behaviour.
+    Done,
+}

@@ -32,6 +32,7 @@
 #![deny(missing_docs)]
 
 pub mod ai;
+pub mod behaviour;
 pub mod env;
 mod error;
 pub mod game;

@@ -66,3 +66,63 @@ fn step_does_not_allocate() {
         assert_eq!(ALLOCATIONS.with(Cell::get), 0, "{name}: step allocated");
     }
 }
+
+/// A match where every outfield player has a behaviour (moving, dribbling, passing, pressing,
+/// marking, holding), stages switched by conditions, and an `end when` condition.
+fn behaviour_scenario() -> touchline_engine::Scenario {
+    use touchline_engine::scenario::{Behaviour, Comparison, Condition, EndCondition, PassKind, Stage, Target};
+    use touchline_engine::{PlayerEntry, Role, Scenario};
+    let with = |role, x, y, stages: Vec<Stage>| PlayerEntry { behaviour: stages, ..PlayerEntry::new(role, x, y) };
+    let stage = |behaviour| Stage { behaviour, until: None };
+    let after = |behaviour, steps| Stage { behaviour, until: Some(Condition::Steps { op: Comparison::Ge, steps }) };
+    Scenario {
+        left_team: vec![
+            PlayerEntry::new(Role::GK, -1.0, 0.0),
+            with(
+                Role::CF,
+                0.0,
+                0.0,
+                vec![
+                    after(Behaviour::DribbleTo { point: [0.4, 0.1], shoot: false }, 40),
+                    stage(Behaviour::PassTo { player: 2, kind: PassKind::Short }),
+                    stage(Behaviour::Follow(Target::Ball)),
+                ],
+            ),
+            with(
+                Role::LM,
+                0.2,
+                -0.3,
+                vec![after(Behaviour::HoldPosition, 80), stage(Behaviour::MoveTo { point: [0.7, 0.0] })],
+            ),
+            with(Role::RM, 0.1, 0.3, vec![stage(Behaviour::DribbleTo { point: [0.8, 0.0], shoot: true })]),
+        ],
+        right_team: vec![
+            PlayerEntry::new(Role::GK, -1.0, 0.0),
+            with(Role::CM, -0.2, 0.0, vec![stage(Behaviour::Press)]),
+            with(Role::CB, -0.5, 0.2, vec![stage(Behaviour::Mark(Target::Left(2)))]),
+            with(Role::CB, -0.5, -0.2, vec![stage(Behaviour::Builtin { difficulty: Some(0.3) })]),
+        ],
+        ball_position: [0.01, 0.0],
+        game_duration: 400,
+        end_when: vec![EndCondition::When(Condition::Any(vec![
+            Condition::Score { side: touchline_engine::Side::Left, op: Comparison::Ge, goals: 2 },
+            Condition::Distance { a: Target::Ball, b: Target::Point([1.0, 0.0]), op: Comparison::Lt, metres: 1.0 },
+        ]))],
+        ..Scenario::default()
+    }
+}
+
+#[test]
+fn behaviours_do_not_allocate() {
+    let config = touchline_engine::EnvConfig { left_agents: 0, ..touchline_engine::EnvConfig::default() };
+    let mut env = touchline_engine::Env::with_config(behaviour_scenario(), config, 1).unwrap();
+    for _ in 0..3000 {
+        COUNTING.with(|c| c.set(true));
+        let out = env.step(&[]).unwrap();
+        COUNTING.with(|c| c.set(false));
+        if out.terminated || out.truncated {
+            env.reset();
+        }
+    }
+    assert_eq!(ALLOCATIONS.with(Cell::get), 0, "behaviours: step allocated");
+}

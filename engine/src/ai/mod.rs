@@ -128,6 +128,9 @@ pub struct TeamAi {
     think_carry: f32,
     /// Tick at which this team's keeper took hold of the ball.
     keeper_since: Option<u64>,
+    /// Per-player θ of `builtin(θ)` behaviours (empty until one is set; `None`: the team's).
+    #[serde(default)]
+    player_difficulty: Vec<Option<Difficulty>>,
 }
 
 impl TeamAi {
@@ -140,6 +143,7 @@ impl TeamAi {
             next_think: 0,
             think_carry: 0.0,
             keeper_since: None,
+            player_difficulty: Vec::new(),
         }
     }
 
@@ -149,25 +153,28 @@ impl TeamAi {
     }
 
     /// Re-plans when the reaction time has passed, then writes this tick's inputs for the team's
-    /// players that no agent drives. `inputs` and `agent_driven` are the team's slices.
+    /// players that no agent drives. `inputs`, `agent_driven` and `native` are the team's slices;
+    /// players marked `native` are driven by their behaviours (`crate::behaviour`): the AI
+    /// neither plans for them nor writes their inputs.
     pub(crate) fn drive(
         &mut self,
         view: &MatchView,
         rng: &mut MatchRng,
         inputs: &mut [PlayerInput],
         agent_driven: &[bool],
+        native: &[bool],
     ) {
         let first = view.ranges[self.side.index()].start;
         // An event that needs an instant reaction: the ball changed hands or a set piece began.
         if view.tick >= self.next_think {
-            self.think(view, rng);
+            self.think(view, rng, native);
             let interval = self.difficulty.reaction_ticks + self.think_carry;
             let whole = interval.floor();
             self.think_carry = interval - whole;
             self.next_think = view.tick + whole as u64;
         }
         for (i, plan) in self.plans.iter_mut().enumerate() {
-            if agent_driven[i] {
+            if agent_driven[i] || native[i] {
                 continue;
             }
             let p = &view.players[first + i];
@@ -186,7 +193,16 @@ impl TeamAi {
         }
     }
 
-    fn think(&mut self, view: &MatchView, rng: &mut MatchRng) {
+    /// Gives the team's player `index` his own θ (a `builtin(θ)` behaviour), or back the team's
+    /// (`None`): his decisions (noise, pressing reach, aim) follow it.
+    pub(crate) fn set_player_difficulty(&mut self, index: usize, theta: Option<f32>) {
+        if self.player_difficulty.len() < self.plans.len() {
+            self.player_difficulty.resize(self.plans.len(), None);
+        }
+        self.player_difficulty[index] = theta.map(Difficulty::new);
+    }
+
+    fn think(&mut self, view: &MatchView, rng: &mut MatchRng, native: &[bool]) {
         let side = self.side;
         let analysis = prediction::analyse(view, side, &self.difficulty);
         let range = view.ranges[side.index()].clone();
@@ -194,22 +210,27 @@ impl TeamAi {
         self.keeper_since = if keeper_has_ball { Some(self.keeper_since.unwrap_or(view.tick)) } else { None };
         for g in range.clone() {
             let i = g - range.start;
+            if native[i] {
+                continue;
+            }
             let p = &view.players[g];
             let ball = view.ball.xy();
+            let difficulty = self.player_difficulty.get(i).copied().flatten().unwrap_or(self.difficulty);
+            let difficulty = &difficulty;
             let plan = if !p.active || p.lazy {
                 Plan::go(p.position, 0.0, ball - p.position)
             } else if view.mode != GameMode::Normal {
-                set_piece::plan(view, g, &analysis, &self.difficulty, rng)
+                set_piece::plan(view, g, &analysis, difficulty, rng)
             } else if view.owner == Some(g) && p.is_keeper() {
                 goalkeeper::distribute(view, g, view.tick - self.keeper_since.unwrap_or(view.tick), &analysis)
             } else if view.owner == Some(g) {
-                ball_carrier::plan(view, g, &analysis, &self.difficulty, rng)
+                ball_carrier::plan(view, g, &analysis, difficulty, rng)
             } else if p.is_keeper() {
-                goalkeeper::plan(view, g, &analysis, &self.difficulty)
-            } else if let Some(plan) = pressing::plan(view, g, &analysis, &self.difficulty) {
+                goalkeeper::plan(view, g, &analysis, difficulty)
+            } else if let Some(plan) = pressing::plan(view, g, &analysis, difficulty) {
                 plan
             } else {
-                let target = team_shape::position(view, g, analysis.frame, &self.difficulty);
+                let target = team_shape::position(view, g, analysis.frame, difficulty);
                 let d = target.distance(p.position);
                 Plan::go(target, if d > 10.0 { p.max_speed * 0.9 } else { WALK_SPEED }, ball - p.position)
             };

@@ -6,6 +6,19 @@ use glam::Vec2;
 
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::geometry::pitch::HALF_LENGTH;
+use crate::player::Player;
+
+/// Where presser `p` runs to close down `carrier` with the ball at `ball` (m, global): a little
+/// ahead of him and goal-side, then, within 2.5 m, at the ball itself in front of him (standing
+/// off goal-side, a still carrier could shield it for ever). Shared with the `press` behaviour.
+pub(crate) fn close_down(p: &Player, carrier: &Player, ball: Vec2) -> Vec2 {
+    if p.position.distance(carrier.position) < 2.5 {
+        ball + (ball - carrier.position).normalize_or_zero() * 0.3
+    } else {
+        let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
+        carrier.position + carrier.velocity * 0.3 + (own_goal - carrier.position).normalize_or_zero() * 0.6
+    }
+}
 
 /// A pressing or covering plan for player `g`, or `None` when he should hold his place.
 pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty) -> Option<Plan> {
@@ -21,19 +34,7 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Diffic
         if loose || p.position.distance(ball) <= difficulty.hunt_distance {
             let target = match view.owner {
                 // Close down the carrier: aim a little ahead of him, goal-side.
-                Some(o) => {
-                    let carrier = &view.players[o];
-                    if p.position.distance(carrier.position) < 2.5 {
-                        // At the carrier: go for the ball itself, in front of him (standing off
-                        // goal-side, a still carrier could shield it for ever).
-                        ball + (ball - carrier.position).normalize_or_zero() * 0.3
-                    } else {
-                        let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
-                        carrier.position
-                            + carrier.velocity * 0.3
-                            + (own_goal - carrier.position).normalize_or_zero() * 0.6
-                    }
-                }
+                Some(o) => close_down(p, &view.players[o], ball),
                 // Close to a loose ball: go straight at it.
                 None if p.position.distance(ball) < 3.0 => ball + view.ball.velocity.truncate() * 0.1,
                 None => meet,

@@ -73,6 +73,28 @@ pub trait Hooks: Send + Sync + fmt::Debug {
     /// step then fails and the episode is over.
     fn step(&mut self, view: &HookView<'_>, rewards: &mut [f32]) -> Result<HookOutcome, EngineError>;
 
+    /// The action of `side`'s player `player` (index in his team), whose behaviour stage is
+    /// `script "path"`, for the step about to be played; asked once per scripted player before
+    /// the step's ticks, in player order (left team first). The action is in the player's own
+    /// frame (his team attacking +x, as an agent's) and is applied as an agent's, with a sticky
+    /// gamepad of his own. `view` shows the state before the step (`steps` taken so far,
+    /// `actions` the agents' actions for this step).
+    ///
+    /// # Errors
+    /// A hook that fails; the step then fails and the episode is over. Hooks without behaviour
+    /// scripts keep this default, which refuses.
+    fn behaviour_action(
+        &mut self,
+        _view: &HookView<'_>,
+        side: crate::geometry::Side,
+        player: usize,
+        path: &str,
+    ) -> Result<Action, EngineError> {
+        Err(EngineError::InvalidScenario {
+            reason: format!("these hooks run no behaviour scripts (\"{path}\" for {} player {player})", side.name()),
+        })
+    }
+
     /// Messages of the last reset or step: lines the scripts printed and absorbed errors.
     fn log(&self) -> &[String] {
         &[]

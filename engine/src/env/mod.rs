@@ -96,6 +96,32 @@ pub struct Env {
     hook_rewards: Vec<f32>,
 }
 
+/// The input a gamepad in state `sticky` gives `player` in a step where `press` was pressed
+/// (agents' and scripted players' actions alike).
+fn sticky_input(sticky: &StickyState, press: Press, player: &crate::player::Player) -> PlayerInput {
+    let dir = sticky.direction_action().and_then(Action::direction_vector).unwrap_or(Vec2::ZERO);
+    let speed = if sticky.dribble {
+        DRIBBLE_SPEED
+    } else if sticky.sprint {
+        player.max_speed
+    } else {
+        WALK_SPEED
+    };
+    let aim = if dir == Vec2::ZERO { player.facing } else { dir };
+    // GRF's gauge: power = clamp((gauge - 60 ms) / 940 ms, 0, 1) (grf.md §5.4).
+    let power = ((ONE_STEP_GAUGE_MS - 60.0) / 940.0).clamp(0.0, 1.0);
+    PlayerInput {
+        velocity: dir * speed,
+        look: player.facing,
+        dribble: sticky.dribble,
+        kick: match press {
+            Press::Kick(kind) => Some(Kick { kind, target: KickTarget::Direction(aim), height: 0.6, power }),
+            _ => None,
+        },
+        slide: press == Press::Slide,
+    }
+}
+
 impl Env {
     /// An environment with the default configuration (one left agent, scoring reward, 19
     /// actions), reset to its first episode with `seed`.
@@ -165,6 +191,16 @@ impl Env {
             Some(bytes) => Some(Box::new(snapshot::start_match(&scenario, bytes)?)),
             None => None,
         };
+        if hooks.is_none()
+            && let Some(path) = scenario.script_behaviours().next()
+        {
+            return Err(EngineError::InvalidScenario {
+                reason: format!(
+                    "the behaviour script \"{path}\" needs script hooks; build the env through \
+                     touchline_dsl, which runs scripts"
+                ),
+            });
+        }
         if hooks.is_none()
             && let Some(crate::scenario::EndCondition::Script { path }) =
                 scenario.end_when.iter().find(|c| matches!(c, crate::scenario::EndCondition::Script { .. }))
@@ -390,6 +426,8 @@ impl Env {
             self.taken[i] = action;
             self.apply_action(i, action);
         }
+        self.state.game.set_env_steps(self.state.steps);
+        self.step_behaviours()?;
         let mut ticks = 0;
         for _ in 0..TICKS_PER_STEP {
             self.state.game.tick();
@@ -438,15 +476,7 @@ impl Env {
             checkpoint_total += bonus;
             self.state.rewards[i] = plan.scoring * r + bonus;
         }
-        let ball = self.state.game.ball().position;
-        let terminated = self.state.end.terminated(
-            &self.scenario,
-            score,
-            self.state.game.mode(),
-            self.state.game.owner().map(|o| o.0),
-            self.state.steps,
-            crate::geometry::coords::world_to_obs(glam::Vec2::new(ball.x, ball.y)),
-        );
+        let terminated = self.state.end.terminated(&self.scenario, &self.state.game, self.state.steps);
         let truncated = self.state.steps > self.scenario.game_duration;
         let (hooks_end, script_reward, script_errors) = self.run_hooks()?;
         let terminated = terminated || hooks_end;
@@ -463,6 +493,52 @@ impl Env {
             episode: self.state.episode,
         };
         Ok(StepOutcome { terminated, truncated })
+    }
+
+    /// Before the ticks of a step: hands behaviour players no controller drives any more back to
+    /// their behaviours, and asks the hooks for each scripted player's action, applied as an
+    /// agent's (his own frame, sticky state of his own). A hook error ends the episode and fails
+    /// the step.
+    fn step_behaviours(&mut self) -> Result<(), EngineError> {
+        if self.state.game.behaviours.is_empty() {
+            return Ok(());
+        }
+        for side in Side::BOTH {
+            let (start, len) = self.controller_span(side);
+            self.state.game.release_behaviour_players(side, &self.state.controlled[start..start + len]);
+        }
+        for g in 0..self.state.game.players().len() {
+            let Some((side, index, path)) = self.state.game.scripted_player(g) else { continue };
+            let Some(hooks) = self.hooks.as_mut() else {
+                // `Env::build` refuses script behaviours without hooks; a snapshot of another env
+                // cannot bring one in (fingerprints differ).
+                continue;
+            };
+            let view = HookView {
+                game: &self.state.game,
+                observations: &self.state.observations,
+                left_controllers: self.state.controllers.iter().filter(|c| c.side == Side::Left).count(),
+                actions: &self.taken,
+                rewards: &self.state.rewards,
+                steps: self.state.steps,
+                steps_left: (self.scenario.game_duration + 1).saturating_sub(self.state.steps),
+                episode: self.state.episode,
+                seed: self.state.seed,
+            };
+            let action = match hooks.behaviour_action(&view, side, index, path) {
+                Ok(action) => action,
+                Err(e) => {
+                    self.state.done = true;
+                    return Err(e);
+                }
+            };
+            let global = if side == Side::Right { action.rotated() } else { action };
+            let mut sticky = self.state.game.script_sticky(g);
+            let press = sticky.apply(global);
+            let input = sticky_input(&sticky, press, &self.state.game.players()[g]);
+            self.state.game.set_script_input(g, input, sticky);
+        }
+        Ok(())
     }
 
     /// Runs the hooks after a step: adds their rewards and returns (end, reward paid, errors
@@ -533,28 +609,7 @@ impl Env {
             self.state.game.set_agent_input(side, index, None);
             return;
         }
-        let player = &self.state.game.team(side)[index];
-        let dir = sticky.direction_action().and_then(Action::direction_vector).unwrap_or(Vec2::ZERO);
-        let speed = if sticky.dribble {
-            DRIBBLE_SPEED
-        } else if sticky.sprint {
-            player.max_speed
-        } else {
-            WALK_SPEED
-        };
-        let aim = if dir == Vec2::ZERO { player.facing } else { dir };
-        // GRF's gauge: power = clamp((gauge - 60 ms) / 940 ms, 0, 1) (grf.md §5.4).
-        let power = ((ONE_STEP_GAUGE_MS - 60.0) / 940.0).clamp(0.0, 1.0);
-        let input = PlayerInput {
-            velocity: dir * speed,
-            look: player.facing,
-            dribble: sticky.dribble,
-            kick: match press {
-                Press::Kick(kind) => Some(Kick { kind, target: KickTarget::Direction(aim), height: 0.6, power }),
-                _ => None,
-            },
-            slide: press == Press::Slide,
-        };
+        let input = sticky_input(&sticky, press, &self.state.game.team(side)[index]);
         self.state.game.set_agent_input(side, index, Some(input));
     }
 

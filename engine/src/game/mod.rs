@@ -100,6 +100,12 @@ pub struct Match {
     pub(crate) stats: MatchStats,
     /// Events since the env's last step began.
     pub(crate) events: EventLog,
+    /// Per-player behaviour state (global index); empty when no player has a behaviour.
+    pub(crate) behaviours: Vec<crate::behaviour::PlayerBehaviour>,
+    /// Players the behaviours drive this tick (global index; all false without behaviours).
+    pub(crate) native: Vec<bool>,
+    /// Env steps taken this episode, as the env last told (behaviour conditions' `steps`).
+    pub(crate) env_steps: u32,
 }
 
 impl Match {
@@ -142,7 +148,7 @@ impl Match {
                 .fold(f32::INFINITY, f32::min)
         };
         let first_kickoff = if nearest(Side::Left) <= nearest(Side::Right) { Side::Left } else { Side::Right };
-        Match {
+        let mut game = Match {
             ai: [
                 TeamAi::new(Side::Left, difficulty[0], left.len()),
                 TeamAi::new(Side::Right, difficulty[1], right.len()),
@@ -177,7 +183,12 @@ impl Match {
             whistle: None,
             stats: MatchStats::default(),
             events: EventLog::default(),
-        }
+            behaviours: Vec::new(),
+            native: vec![false; n],
+            env_steps: 0,
+        };
+        game.install_behaviours(&left, &right);
+        game
     }
 
     /// Counts `event` in the statistics and lists it in this step's events.
@@ -229,6 +240,10 @@ impl Match {
             p.max_speed = p.fresh_speed * crate::player::fatigue::speed_factor(p.fatigue);
         }
         m.offsides = scenario.offsides;
+        m.env_steps = 0;
+        m.native = vec![false; m.players.len()];
+        let (left, right) = scenario.teams_for_episode(episode);
+        m.install_behaviours(left, right);
         let (seed, noisy) =
             if scenario.deterministic { (scenario.game_engine_random_seed, false) } else { (seed, true) };
         m.rng = MatchRng::new(seed, if scenario.deterministic { 0 } else { episode }, noisy);

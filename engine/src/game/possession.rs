@@ -54,7 +54,7 @@ impl Match {
     /// `g`'s skill for `stat` after difficulty and fatigue, in [0, 1].
     fn skill_of(&self, g: usize, stat: f32) -> f32 {
         let p = &self.players[g];
-        p.skill(stat, self.difficulty[p.side.index()])
+        p.skill(stat, self.theta(g))
     }
 
     /// Opponents near the owner try to take the ball: standing challenges win it or trip the

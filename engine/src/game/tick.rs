@@ -79,6 +79,11 @@ impl Match {
     }
 
     fn run_ai(&mut self) {
+        // Without behaviours none of this runs: such matches play exactly as before.
+        let behaviours = !self.behaviours.is_empty();
+        if behaviours {
+            self.prepare_behaviours();
+        }
         let view = crate::ai::MatchView {
             players: &self.players,
             ranges: &self.ranges,
@@ -93,8 +98,20 @@ impl Match {
             offsides: self.offsides,
         };
         for side in 0..2 {
+            if behaviours && self.nobody_for_ai(side) {
+                continue;
+            }
             let range = self.ranges[side].clone();
-            self.ai[side].drive(&view, &mut self.rng, &mut self.inputs[range.clone()], &self.agent_driven[range]);
+            self.ai[side].drive(
+                &view,
+                &mut self.rng,
+                &mut self.inputs[range.clone()],
+                &self.agent_driven[range.clone()],
+                &self.native[range],
+            );
+        }
+        if behaviours {
+            self.behaviour_inputs();
         }
     }
 
@@ -107,7 +124,7 @@ impl Match {
             if let Some(kick) = input.kick {
                 if self.owner == Some(g) {
                     self.execute_kick(g, kick);
-                } else if self.agent_driven[g] {
+                } else if self.agent_driven[g] || self.is_scripted(g) {
                     self.players[g].pending_kick = Some((kick, KICK_BUFFER_TICKS));
                 }
                 // A kick is a one-tick request.
@@ -167,7 +184,7 @@ impl Match {
         };
         let kicker = &self.players[g];
         let stat = if kick.kind == KickKind::Shot { kicker.attributes.shooting } else { kicker.attributes.passing };
-        let accuracy = kicker.skill(stat, self.difficulty[side.index()]);
+        let accuracy = kicker.skill(stat, self.theta(g));
         launch(&mut self.ball, &self.players[g], &kick, target, accuracy, &mut self.rng);
         let p = &mut self.players[g];
         p.touch_cooldown = KICK_COOLDOWN;
@@ -200,7 +217,7 @@ impl Match {
         let base = MotionLimits::default();
         let fatigue_tick = self.in_play_ticks.is_multiple_of(FATIGUE_EVERY);
         for g in 0..self.players.len() {
-            let theta = self.difficulty[self.players[g].side.index()];
+            let theta = self.theta(g);
             let p = &mut self.players[g];
             if !p.active {
                 continue;

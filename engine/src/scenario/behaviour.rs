@@ -9,7 +9,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::condition::{Condition, Target};
+use super::condition::{CheckContext, Condition, Target};
 
 /// How a `pass_to` is played (grf.md §5.4's three passes).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -83,4 +83,41 @@ pub struct Stage {
     /// for behaviours that do not finish). `Condition::Done` inside it means the same.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub until: Option<Condition>,
+}
+
+impl Stage {
+    /// Checks a stage of `side`'s (0 left, 1 right) player `index`, whose team has `team`
+    /// players: targets and points as [`Condition::check`], `pass_to` a team-mate other than
+    /// himself, `mark` another player, θ in [0, 1], a script path.
+    pub(crate) fn check(&self, side: usize, index: usize, team: usize, ctx: CheckContext) -> Result<(), String> {
+        let himself = |t: &Target| match *t {
+            Target::Me => true,
+            Target::Left(i) => side == 0 && i == index,
+            Target::Right(i) => side == 1 && i == index,
+            _ => false,
+        };
+        match &self.behaviour {
+            Behaviour::Follow(t) if himself(t) => return Err("a player cannot follow himself".into()),
+            Behaviour::Follow(t) => t.check(ctx)?,
+            Behaviour::Mark(t) if himself(t) => return Err("a player cannot mark himself".into()),
+            Behaviour::Mark(t @ (Target::Left(_) | Target::Right(_))) => t.check(ctx)?,
+            Behaviour::Mark(_) => return Err("mark needs a player".into()),
+            Behaviour::MoveTo { point } | Behaviour::DribbleTo { point, .. } => Target::Point(*point).check(ctx)?,
+            Behaviour::PassTo { player, .. } if *player == index => {
+                return Err("a player cannot pass to himself".into());
+            }
+            Behaviour::PassTo { player, .. } if *player >= team => {
+                return Err(format!("pass_to names team-mate {player}, who does not exist"));
+            }
+            Behaviour::Builtin { difficulty: Some(theta) } if !(0.0..=1.0).contains(theta) => {
+                return Err(format!("builtin difficulty {theta} is outside [0, 1]"));
+            }
+            Behaviour::Script { path } if path.is_empty() => return Err("a behaviour script needs a path".into()),
+            _ => {}
+        }
+        match &self.until {
+            Some(c) => c.check(ctx),
+            None => Ok(()),
+        }
+    }
 }

@@ -51,6 +51,11 @@ pub enum Comparison {
 impl Comparison {
     /// Whether `lhs OP rhs` holds.
     pub fn holds(self, lhs: f32, rhs: f32) -> bool {
+        self.compare(lhs, rhs)
+    }
+
+    /// Whether `lhs OP rhs` holds, for any ordered values (step counts, goals).
+    pub fn compare<T: PartialOrd>(self, lhs: T, rhs: T) -> bool {
         match self {
             Comparison::Lt => lhs < rhs,
             Comparison::Le => lhs <= rhs,
@@ -138,4 +143,54 @@ pub enum Condition {
     /// `done`: the behaviour stage this condition ends has finished by itself (arrived at its
     /// point, made its pass or shot). Only meaningful inside a behaviour.
     Done,
+}
+
+/// What a condition may refer to where it is used.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct CheckContext {
+    /// Inside a behaviour (`me` and `done` allowed) rather than `end when`.
+    pub(crate) in_behaviour: bool,
+    /// Players each side fields in every episode `[left, right]`.
+    pub(crate) players: [usize; 2],
+}
+
+impl Target {
+    /// Checks a target: `me` only inside a behaviour, player indices in range, points finite
+    /// and on the pitch.
+    pub(crate) fn check(&self, ctx: CheckContext) -> Result<(), String> {
+        match *self {
+            Target::Me if !ctx.in_behaviour => Err("`me` names no player in `end when`".into()),
+            Target::Left(i) if i >= ctx.players[0] => Err(format!("left player {i} does not exist")),
+            Target::Right(i) if i >= ctx.players[1] => Err(format!("right player {i} does not exist")),
+            Target::Point([x, y]) if !super::on_pitch(x, y) => Err(format!("point ({x}, {y}) is off the pitch")),
+            _ => Ok(()),
+        }
+    }
+}
+
+impl Condition {
+    /// Checks every part of the condition (see [`Target::check`]): finite distances, sound
+    /// regions, owners that are players, `done` only inside a behaviour.
+    pub(crate) fn check(&self, ctx: CheckContext) -> Result<(), String> {
+        match self {
+            Condition::All(all) | Condition::Any(all) => all.iter().try_for_each(|c| c.check(ctx)),
+            Condition::Not(c) => c.check(ctx),
+            Condition::Distance { a, b, metres, .. } => {
+                a.check(ctx)?;
+                b.check(ctx)?;
+                if metres.is_finite() { Ok(()) } else { Err(format!("distance {metres} m is not finite")) }
+            }
+            Condition::In { what, region } => {
+                what.check(ctx)?;
+                region.check()
+            }
+            Condition::Owner(Owner::Player(t)) => match t {
+                Target::Ball | Target::Point(_) => Err("only a player can own the ball".into()),
+                _ => t.check(ctx),
+            },
+            Condition::Done if !ctx.in_behaviour => Err("`done` means nothing in `end when`".into()),
+            Condition::Owner(_) | Condition::Mode(_) | Condition::Steps { .. } | Condition::Score { .. } => Ok(()),
+            Condition::Done => Ok(()),
+        }
+    }
 }

@@ -198,6 +198,11 @@ const MAX_ABS_X: f32 = 1.1;
 /// Largest |y| accepted: the outer rim (40 m) in normalised units.
 const MAX_ABS_Y: f32 = 0.48;
 
+/// 0 for the left team, 1 for the right.
+fn side_index(side: &str) -> usize {
+    usize::from(side == "right")
+}
+
 /// Whether `(x, y)` is finite and inside the rim.
 fn on_pitch(x: f32, y: f32) -> bool {
     x.is_finite() && y.is_finite() && x.abs() <= MAX_ABS_X && y.abs() <= MAX_ABS_Y
@@ -252,8 +257,10 @@ impl Scenario {
                 return bad(format!("{side} team has {keepers} goalkeepers; exactly one is required"));
             }
             for (i, p) in team.iter().enumerate() {
-                if !p.behaviour.is_empty() {
-                    return bad(format!("{side} player {i}: behaviours are not played yet"));
+                for (k, stage) in p.behaviour.iter().enumerate() {
+                    stage.check(side_index(side), i, team.len(), self.condition_context(true)).map_err(|e| {
+                        EngineError::InvalidScenario { reason: format!("{side} player {i}, behaviour stage {k}: {e}") }
+                    })?;
                 }
                 if !on_pitch(p.x, p.y) {
                     return bad(format!("{side} player {i} ({}) at ({}, {}) is off the pitch", p.role, p.x, p.y));
@@ -294,11 +301,29 @@ impl Scenario {
                 EndCondition::BallIn(region) => {
                     region.check().map_err(|reason| EngineError::InvalidScenario { reason })?;
                 }
-                EndCondition::When(_) => return bad("`end when` conditions are not evaluated yet".into()),
+                EndCondition::When(c) => c
+                    .check(self.condition_context(false))
+                    .map_err(|e| EngineError::InvalidScenario { reason: format!("end when: {e}") })?,
                 _ => {}
             }
         }
         Ok(())
+    }
+
+    /// What conditions may name: players every episode fields (with the odd-episode swap,
+    /// the smaller list on both sides).
+    fn condition_context(&self, in_behaviour: bool) -> condition::CheckContext {
+        let n = [self.left_team.len(), self.right_team.len()];
+        let players = if self.swap_teams_on_odd_episodes { [n[0].min(n[1]); 2] } else { n };
+        condition::CheckContext { in_behaviour, players }
+    }
+
+    /// The paths of the scripts players' behaviours name, in player order.
+    pub fn script_behaviours(&self) -> impl Iterator<Item = &str> + '_ {
+        self.left_team.iter().chain(&self.right_team).flat_map(|p| &p.behaviour).filter_map(|s| match &s.behaviour {
+            Behaviour::Script { path } => Some(path.as_str()),
+            _ => None,
+        })
     }
 
     /// Number of controllable players on each side `[left, right]` (GRF's

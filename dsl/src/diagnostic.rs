@@ -57,6 +57,24 @@ pub enum Code {
     DuplicateDefinition,
     /// `start from` names a file that is not a usable saved state.
     StartState,
+    /// A behaviour name that is not known (`pres` for `press`).
+    UnknownBehaviour,
+    /// A behaviour with the wrong number or kind of arguments (a point, a player or a pass kind
+    /// expected).
+    BehaviourArguments,
+    /// `me` or `done` in `end when`: they only mean something inside a player's behaviour.
+    BehaviourOnly,
+    /// `pass_to` a player of the other team, or to the passer himself.
+    PassTarget,
+    /// `game_mode is NAME` with a name that is not a game mode.
+    UnknownGameMode,
+    /// A comparison whose left side is not `distance(a, b)`, `steps` or `score(side)`.
+    UnknownMeasure,
+    /// `then shoot` after something other than `dribble_to(point)`.
+    MisplacedShoot,
+    /// `score`, `out_of_play`, `possession_change` or `script` where only the condition language
+    /// fits (inside `and`/`not`/parentheses, or in `until`).
+    EndOnlyCondition,
     /// Warning: a player or ball outside the lines (but inside the rim, so still playable).
     OutsideLines,
     /// Warning: the left team has no controllable player, so an agent has no one to drive.
@@ -65,11 +83,14 @@ pub enum Code {
     UnusedImport,
     /// Warning: a GRF key that changes nothing in touchline (`real_time`, …).
     NoEffect,
+    /// Warning: a behaviour stage after one that never ends (a behaviour that never finishes,
+    /// without an `until` that can hold), so it is never reached.
+    UnreachableStage,
 }
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 26] = [
+    pub const ALL: [Code; 35] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -92,10 +113,19 @@ impl Code {
         Code::UnknownCondition,
         Code::DuplicateDefinition,
         Code::StartState,
+        Code::UnknownBehaviour,
+        Code::BehaviourArguments,
+        Code::BehaviourOnly,
+        Code::PassTarget,
+        Code::UnknownGameMode,
+        Code::UnknownMeasure,
+        Code::MisplacedShoot,
+        Code::EndOnlyCondition,
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
         Code::NoEffect,
+        Code::UnreachableStage,
     ];
 
     /// The code as shown: `tl::E100` … `tl::W102`.
@@ -123,10 +153,19 @@ impl Code {
             Code::UnknownCondition => "tl::E119",
             Code::DuplicateDefinition => "tl::E120",
             Code::StartState => "tl::E121",
+            Code::UnknownBehaviour => "tl::E122",
+            Code::BehaviourArguments => "tl::E123",
+            Code::BehaviourOnly => "tl::E124",
+            Code::PassTarget => "tl::E125",
+            Code::UnknownGameMode => "tl::E126",
+            Code::UnknownMeasure => "tl::E127",
+            Code::MisplacedShoot => "tl::E128",
+            Code::EndOnlyCondition => "tl::E129",
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",
             Code::NoEffect => "tl::W103",
+            Code::UnreachableStage => "tl::W104",
         }
     }
 

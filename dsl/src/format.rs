@@ -13,8 +13,8 @@ use miette::NamedSource;
 
 use crate::diagnostic::Diagnostic;
 use crate::syntax::{
-    self, Argument, Condition, Definition, Expr, ExprKind, Flag, Item, Kind, Place, RewardTerm, Span, Spanned,
-    StatementKind,
+    self, Action, Argument, Behaviour, Condition, ConditionKind, Definition, Expr, ExprKind, Flag, Item, Kind, Place,
+    RewardTerm, Span, Spanned, StatementKind,
 };
 
 /// Formats `.tl` text; `origin` names it in diagnostics.
@@ -153,6 +153,9 @@ impl Formatter<'_> {
                         Flag::NotControllable => " not controllable",
                     });
                 }
+                if let Some(b) = &p.behaviour {
+                    let _ = write!(self.out, " {}", behaviour(b));
+                }
                 self.trailing(p.span.end);
             }
             self.leading(span.end, 4);
@@ -191,16 +194,11 @@ impl Formatter<'_> {
                 s
             }
             StatementKind::End(conditions) => {
-                let c: Vec<String> = conditions
-                    .iter()
-                    .map(|c| match c {
-                        Condition::Steps(e) => format!("steps >= {}", expr(e)),
-                        Condition::BallIn(e) => format!("ball in {}", expr(e)),
-                        Condition::Script(p) => format!("script \"{}\"", p.value),
-                        Condition::Name(n) => n.value.clone(),
-                    })
-                    .collect();
+                let c: Vec<String> = conditions.iter().map(condition).collect();
                 format!("end when {}", c.join(" or "))
+            }
+            StatementKind::Behaviour { player, behaviour: b } => {
+                format!("behaviour {} {}", expr(player), behaviour(b))
             }
             StatementKind::StartFrom(p) => format!("start from \"{}\"", p.value),
             StatementKind::Setting { key, value } => format!("{} {}", key.value, expr(value)),
@@ -225,6 +223,43 @@ fn place(p: &Place) -> String {
     match p {
         Place::At(e) => format!("at {}", expr(e)),
         Place::In(e) => format!("in {}", expr(e)),
+    }
+}
+
+/// `does A then B until C …`, without the optional `do` words.
+fn behaviour(b: &Behaviour) -> String {
+    let stages: Vec<String> = b
+        .stages
+        .iter()
+        .map(|st| {
+            let mut text = match &st.action {
+                Action::Script(p) => format!("script \"{}\"", p.value),
+                Action::Expr(e) => expr(e),
+            };
+            if st.shoot.is_some() {
+                text.push_str(" then shoot");
+            }
+            if let Some(c) = &st.until {
+                let _ = write!(text, " until {}", condition(c));
+            }
+            text
+        })
+        .collect();
+    format!("does {}", stages.join(" then "))
+}
+
+/// A condition as written: the parse tree keeps parentheses, so precedence comes out unchanged.
+fn condition(c: &Condition) -> String {
+    match &c.kind {
+        ConditionKind::Any(parts) => parts.iter().map(condition).collect::<Vec<_>>().join(" or "),
+        ConditionKind::All(parts) => parts.iter().map(condition).collect::<Vec<_>>().join(" and "),
+        ConditionKind::Not(inner) => format!("not {}", condition(inner)),
+        ConditionKind::Group(inner) => format!("({})", condition(inner)),
+        ConditionKind::Compare { lhs, op, rhs } => format!("{} {} {}", expr(lhs), op.value, expr(rhs)),
+        ConditionKind::In { what, region } => format!("{} in {}", expr(what), expr(region)),
+        ConditionKind::Is { what, value } => format!("{} is {}", expr(what), expr(value)),
+        ConditionKind::Script(p) => format!("script \"{}\"", p.value),
+        ConditionKind::Name(n) => n.value.clone(),
     }
 }
 

@@ -4,8 +4,11 @@
 
 use std::fmt::Write;
 
-use touchline_engine::scenario::{Distribution, EndCondition, Region, Require, RewardKind, Sample, Spot};
-use touchline_engine::{PlayerEntry, Scenario};
+use touchline_engine::scenario::{
+    Behaviour, Comparison, Condition, Distribution, EndCondition, Owner, PassKind, Region, Require, RewardKind, Sample,
+    Spot, Stage, Target,
+};
+use touchline_engine::{GameMode, PlayerEntry, Scenario, Side};
 
 /// The scenario as a standalone `.tl` file (no `extends`: every key that differs from GRF's
 /// default is written out, except that a scenario matching the `academy` preset extends it).
@@ -79,8 +82,7 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
             EndCondition::Steps(n) => format!("steps >= {n}"),
             EndCondition::BallIn(r) => format!("ball in {}", region(r)),
             EndCondition::Script { path } => format!("script \"{path}\""),
-            // Printed by the condition language's printer once it lands (issue 9).
-            EndCondition::When(c) => format!("{c:?}"),
+            EndCondition::When(c) => end_condition(c),
         }));
         if conditions.is_empty() {
             // No condition at all: only the time limit ends the episode.
@@ -102,8 +104,9 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
     }
     for (side, team) in [("left", &s.left_team), ("right", &s.right_team)] {
         let _ = writeln!(out, "  team {side} {{");
+        let side = if side == "left" { Side::Left } else { Side::Right };
         for p in team {
-            let _ = writeln!(out, "    {}", player(p));
+            let _ = writeln!(out, "    {}", player(p, side));
         }
         out.push_str("  }\n");
     }
@@ -132,7 +135,7 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
     out
 }
 
-fn player(p: &PlayerEntry) -> String {
+fn player(p: &PlayerEntry, side: Side) -> String {
     let mut line = format!("{} {}", p.role, place([p.x, p.y], p.random.as_ref()));
     if p.lazy {
         line.push_str(" lazy");
@@ -140,7 +143,123 @@ fn player(p: &PlayerEntry) -> String {
     if !p.controllable {
         line.push_str(" not controllable");
     }
+    if !p.behaviour.is_empty() {
+        let _ = write!(line, " does {}", stages(&p.behaviour, side));
+    }
     line
+}
+
+/// A behaviour's stages: `A until C then B …` (points in the player's team frame, as stored).
+fn stages(stages: &[Stage], side: Side) -> String {
+    let parts: Vec<String> = stages
+        .iter()
+        .map(|st| {
+            let mut text = behaviour(&st.behaviour, side);
+            if let Some(c) = &st.until {
+                let _ = write!(text, " until {}", condition(c));
+            }
+            text
+        })
+        .collect();
+    parts.join(" then ")
+}
+
+fn behaviour(b: &Behaviour, side: Side) -> String {
+    let point = |[x, y]: [f32; 2]| format!("({}, {})", number(x), number(y));
+    match b {
+        Behaviour::Idle => "idle".into(),
+        Behaviour::HoldPosition => "hold_position".into(),
+        Behaviour::Follow(t) => format!("follow({})", target(*t)),
+        Behaviour::MoveTo { point: p } => format!("move_to({})", point(*p)),
+        Behaviour::DribbleTo { point: p, shoot } => {
+            format!("dribble_to({}){}", point(*p), if *shoot { " then shoot" } else { "" })
+        }
+        Behaviour::PassTo { player, kind } => {
+            let team = if side == Side::Left { "left" } else { "right" };
+            let kind = match kind {
+                PassKind::Short => "short",
+                PassKind::Long => "long",
+                PassKind::High => "high",
+            };
+            format!("pass_to({team}[{player}], {kind})")
+        }
+        Behaviour::Mark(t) => format!("mark({})", target(*t)),
+        Behaviour::Press => "press".into(),
+        Behaviour::Builtin { difficulty: None } => "builtin".into(),
+        Behaviour::Builtin { difficulty: Some(d) } => format!("builtin({})", number(*d)),
+        Behaviour::Script { path } => format!("script \"{path}\""),
+    }
+}
+
+/// A whole `end when` condition of the condition language. Parenthesised where it would
+/// otherwise read as several conditions (`a or b`) or as one of the forms with their own compiled
+/// form (`steps >= N`, `ball in REGION`).
+fn end_condition(c: &Condition) -> String {
+    let own_form = matches!(
+        c,
+        Condition::Any(_) | Condition::Steps { op: Comparison::Ge, .. } | Condition::In { what: Target::Ball, .. }
+    );
+    if own_form { format!("({})", condition(c)) } else { condition(c) }
+}
+
+/// A condition in the condition language; nested `and`/`or` lists keep their structure with
+/// parentheses.
+fn condition(c: &Condition) -> String {
+    let part = |c: &Condition, group: fn(&Condition) -> bool| {
+        if group(c) { format!("({})", condition(c)) } else { condition(c) }
+    };
+    match c {
+        Condition::Any(parts) => {
+            parts.iter().map(|p| part(p, |c| matches!(c, Condition::Any(_)))).collect::<Vec<_>>().join(" or ")
+        }
+        Condition::All(parts) => parts
+            .iter()
+            .map(|p| part(p, |c| matches!(c, Condition::Any(_) | Condition::All(_))))
+            .collect::<Vec<_>>()
+            .join(" and "),
+        Condition::Not(inner) => format!("not {}", part(inner, |c| matches!(c, Condition::Any(_) | Condition::All(_)))),
+        Condition::Distance { a, b, op, metres } => {
+            format!("distance({}, {}) {} {} m", target(*a), target(*b), op.symbol(), number(*metres))
+        }
+        Condition::In { what, region: r } => format!("{} in {}", target(*what), region(r)),
+        Condition::Owner(Owner::Nobody) => "owner is nobody".into(),
+        Condition::Owner(Owner::Team(side)) => format!("owner is {}", side_name(*side)),
+        Condition::Owner(Owner::Player(t)) => format!("owner is {}", target(*t)),
+        Condition::Mode(mode) => format!("game_mode is {}", game_mode(*mode)),
+        Condition::Steps { op, steps } => format!("steps {} {steps}", op.symbol()),
+        Condition::Score { side, op, goals } => format!("score({}) {} {goals}", side_name(*side), op.symbol()),
+        Condition::Done => "done".into(),
+    }
+}
+
+fn target(t: Target) -> String {
+    match t {
+        Target::Ball => "ball".into(),
+        Target::Me => "me".into(),
+        Target::Left(i) => format!("left[{i}]"),
+        Target::Right(i) => format!("right[{i}]"),
+        Target::Point([x, y]) => format!("({}, {})", number(x), number(y)),
+    }
+}
+
+fn side_name(side: Side) -> &'static str {
+    match side {
+        Side::Left => "left",
+        Side::Right => "right",
+    }
+}
+
+/// The condition language's name of a game mode (`throw_in`).
+fn game_mode(mode: GameMode) -> &'static str {
+    match mode {
+        GameMode::Normal => "normal",
+        GameMode::KickOff => "kick_off",
+        GameMode::GoalKick => "goal_kick",
+        GameMode::FreeKick => "free_kick",
+        GameMode::Corner => "corner",
+        GameMode::ThrowIn => "throw_in",
+        GameMode::Penalty => "penalty",
+    }
 }
 
 fn place(nominal: [f32; 2], random: Option<&Spot>) -> String {

@@ -146,6 +146,16 @@ fixtures! {
     no_controllable
     unused_import
     no_effect_key
+    unknown_behaviour
+    behaviour_wrong_arguments
+    behaviour_only_in_end_when
+    pass_to_opponent
+    unknown_game_mode
+    unknown_measure
+    shoot_without_dribble
+    end_only_condition
+    condition_unknown_player
+    builtin_difficulty_out_of_range
 }
 
 #[test]

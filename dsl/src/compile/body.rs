@@ -5,8 +5,9 @@ use std::collections::HashMap;
 use touchline_engine::scenario::{Body, EndCondition, Require, RewardKind, RewardTerm};
 use touchline_engine::{PlayerEntry, Role, Scenario};
 
-use super::pitch;
+use super::condition::Context;
 use super::value::{Frame, Reader, suggest_help};
+use super::{behaviour, condition, pitch};
 use crate::diagnostic::{Code, Diagnostic, Source};
 use crate::suggest;
 use crate::syntax::{self, Condition, Definition, Expr, ExprKind, Flag, Span, StatementKind};
@@ -35,7 +36,18 @@ pub(crate) struct Origins {
 }
 
 /// Words that begin a statement (for "is the team block's `}` missing?").
-const STATEMENT_KEYWORDS: [&str; 7] = ["ball", "team", "require", "reward", "end", "on", "extends"];
+const STATEMENT_KEYWORDS: [&str; 8] = ["ball", "team", "require", "reward", "end", "on", "extends", "behaviour"];
+
+/// Parts of a body read once its teams are in place, because they name players.
+#[derive(Default)]
+struct Deferred<'d> {
+    /// Behaviours of player lines: (side, index in the team, behaviour).
+    players: Vec<(syntax::Side, usize, &'d syntax::Behaviour)>,
+    /// `behaviour PLAYER does …` statements.
+    statements: Vec<(&'d Expr, &'d syntax::Behaviour)>,
+    /// `end when` conditions of the condition language: (index in `end_when`, condition).
+    ends: Vec<(usize, &'d Condition)>,
+}
 
 /// The configuration keys and what they hold.
 const KEYS: [&str; 15] = [
@@ -61,6 +73,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
     let mut seen: HashMap<String, Span> = HashMap::new();
     let mut rewards_cleared = false;
     let mut requires = Vec::new();
+    let mut deferred = Deferred::default();
     for st in &def.statements {
         let key = match &st.kind {
             StatementKind::Extends(_) => "extends".to_owned(),
@@ -73,6 +86,9 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             // `difficulty` is another name for `right_team_difficulty`: giving both is a duplicate.
             StatementKind::Setting { key, .. } if key.value == "difficulty" => "right_team_difficulty".to_owned(),
             StatementKind::Setting { key, .. } => key.value.clone(),
+            StatementKind::Behaviour { player, .. } => {
+                format!("behaviour {}", r.source.inner().get(player.span.start..player.span.end).unwrap_or_default())
+            }
             StatementKind::Require { .. } | StatementKind::Reward { .. } => String::new(),
         };
         // A team block may be long: its first line (`team left …`) stands for it.
@@ -113,7 +129,8 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
                 None => {}
             },
             StatementKind::SwapTeams => s.swap_teams_on_odd_episodes = true,
-            StatementKind::Team(t) => team(t, s, origins, r),
+            StatementKind::Team(t) => team(t, s, origins, r, &mut deferred),
+            StatementKind::Behaviour { player, behaviour } => deferred.statements.push((player, behaviour)),
             StatementKind::Require { .. } => requires.push(st),
             StatementKind::Reward { terms, weight } => {
                 if !rewards_cleared {
@@ -127,11 +144,18 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
                     }
                 }
             }
-            StatementKind::End(conditions) => end(conditions, s, r),
+            StatementKind::End(conditions) => deferred.ends = condition::end_when(conditions, s, r),
             StatementKind::StartFrom(path) => start_from(path, s, r),
         }
     }
-    // Requires name players, so they are read once this body's teams are in place.
+    // Behaviours, conditions and requires name players, so they are read once this body's teams
+    // are in place.
+    behaviours(&deferred, s, r);
+    for &(k, c) in &deferred.ends {
+        if let Some(c) = condition::condition(c, Context::End, s, r) {
+            s.end_when[k] = EndCondition::When(c);
+        }
+    }
     if !requires.is_empty() {
         s.requires.clear();
         origins.requires.clear();
@@ -230,7 +254,44 @@ fn setting(s: &mut Scenario, key: &syntax::Spanned<String>, value: &Expr, r: &mu
     }
 }
 
-fn team(t: &syntax::Team, s: &mut Scenario, origins: &mut Origins, r: &mut Reader<'_>) {
+/// Compiles the deferred behaviours into the players' entries: those of player lines first, then
+/// `behaviour` statements (which replace them).
+fn behaviours(deferred: &Deferred<'_>, s: &mut Scenario, r: &mut Reader<'_>) {
+    for &(side, k, b) in &deferred.players {
+        let side = engine_side(side);
+        if let Some(stages) = behaviour::behaviour(b, side, k, s, r) {
+            team_mut(s, side)[k].behaviour = stages;
+        }
+    }
+    for &(player, b) in &deferred.statements {
+        let Some((side, k)) = condition::player(player, s, r) else { continue };
+        if let Some(stages) = behaviour::behaviour(b, side, k, s, r) {
+            team_mut(s, side)[k].behaviour = stages;
+        }
+    }
+}
+
+fn engine_side(side: syntax::Side) -> touchline_engine::Side {
+    match side {
+        syntax::Side::Left => touchline_engine::Side::Left,
+        syntax::Side::Right => touchline_engine::Side::Right,
+    }
+}
+
+fn team_mut(s: &mut Scenario, side: touchline_engine::Side) -> &mut Vec<PlayerEntry> {
+    match side {
+        touchline_engine::Side::Left => &mut s.left_team,
+        touchline_engine::Side::Right => &mut s.right_team,
+    }
+}
+
+fn team<'d>(
+    t: &'d syntax::Team,
+    s: &mut Scenario,
+    origins: &mut Origins,
+    r: &mut Reader<'_>,
+    deferred: &mut Deferred<'d>,
+) {
     let side = t.side.value;
     let errors_before = r.diags.errors().count();
     let mut entries = Vec::new();
@@ -287,6 +348,9 @@ fn team(t: &syntax::Team, s: &mut Scenario, origins: &mut Origins, r: &mut Reade
                 Flag::Controllable => e.controllable = true,
                 Flag::NotControllable => e.controllable = false,
             }
+        }
+        if let Some(b) = &p.behaviour {
+            deferred.players.push((side, entries.len(), b));
         }
         entries.push(e);
         locs.push(Loc { source: r.source.clone(), span: p.span });
@@ -377,49 +441,6 @@ fn reward_kind(term: &syntax::RewardTerm, r: &mut Reader<'_>) -> Option<RewardKi
                 suggest_help(&close, "the rewards are scoring, checkpoint(count, value) and script \"file.rhai\""),
             );
             None
-        }
-    }
-}
-
-/// The end conditions a name may give.
-const CONDITIONS: [&str; 3] = ["score", "out_of_play", "possession_change"];
-
-fn end(conditions: &[Condition], s: &mut Scenario, r: &mut Reader<'_>) {
-    s.end_episode_on_score = false;
-    s.end_episode_on_out_of_play = false;
-    s.end_episode_on_possession_change = false;
-    s.end_when.clear();
-    for c in conditions {
-        match c {
-            Condition::Name(n) => match n.value.as_str() {
-                "score" => s.end_episode_on_score = true,
-                "out_of_play" => s.end_episode_on_out_of_play = true,
-                "possession_change" => s.end_episode_on_possession_change = true,
-                other => {
-                    let close = suggest::closest(other, &CONDITIONS);
-                    r.error_help(
-                        Code::UnknownCondition,
-                        format!("unknown end condition `{other}`"),
-                        n.span,
-                        "not an end condition",
-                        suggest_help(
-                            &close,
-                            "the conditions are score, out_of_play, possession_change, steps >= N, ball in REGION, script \"file.rhai\"",
-                        ),
-                    );
-                }
-            },
-            Condition::Steps(e) => {
-                if let Some(n) = r.steps(e, "the step limit", 1) {
-                    s.end_when.push(EndCondition::Steps(n));
-                }
-            }
-            Condition::BallIn(e) => {
-                if let Some(region) = r.region(e, Frame::Ball) {
-                    s.end_when.push(EndCondition::BallIn(region));
-                }
-            }
-            Condition::Script(path) => s.end_when.push(EndCondition::Script { path: path.value.clone() }),
         }
     }
 }

@@ -295,7 +295,7 @@ impl Reader<'_> {
     }
 
     /// A fixed point `(x, y)`.
-    fn fixed_point(&mut self, e: &Expr, frame: Frame) -> Option<[f32; 2]> {
+    pub(crate) fn fixed_point(&mut self, e: &Expr, frame: Frame) -> Option<[f32; 2]> {
         let ExprKind::Tuple(args) = &e.kind else {
             self.wrong_type("a point `(x, y)`", e, "write a point as `(x, y)`");
             return None;

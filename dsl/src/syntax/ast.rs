@@ -106,8 +106,15 @@ pub enum StatementKind {
         /// `weight W`.
         weight: Option<Expr>,
     },
-    /// `end when COND or …`.
+    /// `end when COND or …`: the top-level disjuncts (`A or B and C` gives `[A, B and C]`).
     End(Vec<Condition>),
+    /// `behaviour PLAYER does …`: a behaviour for a player of the teams given so far.
+    Behaviour {
+        /// The player (`right.CB`, `left[2]`).
+        player: Expr,
+        /// What the player does.
+        behaviour: Behaviour,
+    },
     /// `start from "file"`.
     StartFrom(Spanned<String>),
     /// `KEY VALUE`.
@@ -150,6 +157,8 @@ pub struct Player {
     pub place: Place,
     /// Flags as written.
     pub flags: Vec<Spanned<Flag>>,
+    /// `does …`.
+    pub behaviour: Option<Behaviour>,
     /// The whole player line.
     pub span: Span,
 }
@@ -183,16 +192,83 @@ pub enum RewardTerm {
     Expr(Expr),
 }
 
-/// One `end when` condition.
+/// `does STAGE then STAGE …`: a player's behaviour.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Condition {
-    /// `steps >= N`.
-    Steps(Expr),
-    /// `ball in REGION`.
-    BallIn(Expr),
+pub struct Behaviour {
+    /// The stages in order.
+    pub stages: Vec<Stage>,
+    /// From `does` to the end.
+    pub span: Span,
+}
+
+/// `[do] ACTION [then shoot] [until COND]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stage {
+    /// What the player does.
+    pub action: Action,
+    /// The span of `then shoot`, when written.
+    pub shoot: Option<Span>,
+    /// `until COND`.
+    pub until: Option<Condition>,
+    /// The whole stage.
+    pub span: Span,
+}
+
+/// A behaviour as written.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Action {
     /// `script "file.rhai"`.
     Script(Spanned<String>),
-    /// `score`, `out_of_play`, `possession_change`.
+    /// `press`, `move_to((x, y))`, `builtin(0.8)`, ….
+    Expr(Expr),
+}
+
+/// A condition of the condition language (`until`, `end when`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Condition {
+    /// What it says.
+    pub kind: ConditionKind,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// The forms of a condition.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ConditionKind {
+    /// `A or B or …` (two or more).
+    Any(Vec<Condition>),
+    /// `A and B and …` (two or more).
+    All(Vec<Condition>),
+    /// `not A`.
+    Not(Box<Condition>),
+    /// `(A)`.
+    Group(Box<Condition>),
+    /// `LHS OP RHS`: `distance(a, b) < 5 m`, `steps >= 50`, `score(left) >= 1`.
+    Compare {
+        /// What is measured.
+        lhs: Expr,
+        /// `<`, `<=`, `>`, `>=`, `==` or `!=`.
+        op: Spanned<String>,
+        /// The value compared with.
+        rhs: Expr,
+    },
+    /// `WHAT in REGION`.
+    In {
+        /// The ball or a player.
+        what: Expr,
+        /// The region.
+        region: Expr,
+    },
+    /// `WHAT is VALUE`: `owner is left`, `game_mode is corner`.
+    Is {
+        /// `owner` or `game_mode`.
+        what: Expr,
+        /// The value.
+        value: Expr,
+    },
+    /// `script "file.rhai"` (only in `end when`).
+    Script(Spanned<String>),
+    /// A name: `done`, `score`, `out_of_play`, `possession_change`.
     Name(Spanned<String>),
 }
 

@@ -44,7 +44,8 @@ pub fn parse(source: &Source) -> Result<File, Box<Diagnostic>> {
 
 /// Words that begin a statement; one met where a player's role was read means that the team
 /// block above lacks its `}`.
-const STATEMENT_KEYWORDS: [&str; 9] = ["team", "ball", "extends", "require", "reward", "end", "on", "start", "import"];
+const STATEMENT_KEYWORDS: [&str; 10] =
+    ["team", "ball", "extends", "require", "reward", "end", "on", "start", "import", "behaviour"];
 
 fn syntax_error(e: pest::error::Error<Rule>, source: &Source) -> Diagnostic {
     let (start, end) = match e.location {
@@ -201,7 +202,21 @@ fn rule_name(rule: &Rule) -> String {
         Rule::comparison => "`>=` or `<=`",
         Rule::reward_term | Rule::script => "a reward term",
         Rule::weight => "`weight`",
-        Rule::condition | Rule::steps_condition | Rule::ball_condition => "an end condition",
+        Rule::condition | Rule::conjunction | Rule::negation | Rule::atom | Rule::group | Rule::relation => {
+            "a condition"
+        }
+        Rule::compare => "a comparison (`<`, `<=`, `>`, `>=`, `==`, `!=`)",
+        Rule::or_kw => "`or`",
+        Rule::and_kw => "`and`",
+        Rule::not_kw => "`not`",
+        Rule::in_kw => "`in`",
+        Rule::is_kw => "`is`",
+        Rule::then_kw | Rule::shoot => "`then`",
+        Rule::shoot_kw => "`shoot`",
+        Rule::until | Rule::until_kw => "`until`",
+        Rule::does | Rule::does_kw => "`does`",
+        Rule::do_kw | Rule::stage | Rule::action => "a behaviour",
+        Rule::behaviour_statement | Rule::behaviour_kw => "`behaviour`",
         Rule::swap_teams => "`swap teams` or `ball`",
         Rule::expr | Rule::call | Rule::index | Rule::tuple | Rule::path => "a value",
         Rule::arguments | Rule::argument => "an argument",
@@ -325,7 +340,19 @@ fn statement(pair: Pair<'_, Rule>) -> Statement {
             }
             StatementKind::Reward { terms, weight }
         }
-        Rule::end => StatementKind::End(inner(pair).map(condition).collect()),
+        Rule::end => {
+            let c = condition(first(pair));
+            StatementKind::End(match c.kind {
+                ConditionKind::Any(cs) => cs,
+                _ => vec![c],
+            })
+        }
+        Rule::behaviour_statement => {
+            let mut it = inner(pair).filter(|p| p.as_rule() != Rule::behaviour_kw);
+            let player = expr(it.next().expect("player"));
+            let behaviour = does(it.next().expect("does"));
+            StatementKind::Behaviour { player, behaviour }
+        }
         Rule::start_from => StatementKind::StartFrom(string(first(pair))),
         _ => {
             let mut it = inner(pair);
@@ -361,7 +388,15 @@ fn player(pair: Pair<'_, Rule>) -> Player {
     let r = it.next().expect("role");
     let role = spanned(&r, r.as_str().to_owned());
     let place = place(it.next().expect("place"));
+    let mut behaviour = None;
     let flags = it
+        .filter(|f| {
+            if f.as_rule() == Rule::does {
+                behaviour = Some(does(f.clone()));
+                return false;
+            }
+            true
+        })
         .map(|f| {
             let flag = match first(f.clone()).as_rule() {
                 Rule::lazy => Flag::Lazy,
@@ -371,7 +406,7 @@ fn player(pair: Pair<'_, Rule>) -> Player {
             spanned(&f, flag)
         })
         .collect();
-    Player { role, place, flags, span }
+    Player { role, place, flags, behaviour, span }
 }
 
 fn place(pair: Pair<'_, Rule>) -> Place {
@@ -381,13 +416,79 @@ fn place(pair: Pair<'_, Rule>) -> Place {
     if is_at { Place::At(e) } else { Place::In(e) }
 }
 
+/// `does STAGE then STAGE …`.
+fn does(pair: Pair<'_, Rule>) -> Behaviour {
+    let span = span_of(&pair);
+    let stages = inner(pair).filter(|p| p.as_rule() == Rule::stage).map(stage).collect();
+    Behaviour { stages, span }
+}
+
+fn stage(pair: Pair<'_, Rule>) -> Stage {
+    let span = span_of(&pair);
+    let mut stage = Stage { action: Action::Expr(placeholder(span)), shoot: None, until: None, span };
+    for p in inner(pair) {
+        match p.as_rule() {
+            Rule::action => {
+                let a = first(p);
+                stage.action = match a.as_rule() {
+                    Rule::script => Action::Script(string(first(a))),
+                    _ => Action::Expr(expr(a)),
+                };
+            }
+            Rule::shoot => stage.shoot = Some(span_of(&p)),
+            Rule::until => stage.until = inner(p).find(|c| c.as_rule() == Rule::condition).map(condition),
+            _ => {}
+        }
+    }
+    stage
+}
+
+/// An expression that is never shown: the grammar guarantees every stage an action.
+fn placeholder(span: Span) -> Expr {
+    Expr { kind: ExprKind::Tuple(Vec::new()), span }
+}
+
+/// `condition`, `conjunction`, `negation`, `atom` or `group` pairs to a [`Condition`]; one-element
+/// `or`/`and` lists collapse to their element.
 fn condition(pair: Pair<'_, Rule>) -> Condition {
-    let c = first(pair);
-    match c.as_rule() {
-        Rule::steps_condition => Condition::Steps(expr(first(c))),
-        Rule::ball_condition => Condition::BallIn(expr(first(c))),
-        Rule::script => Condition::Script(string(first(c))),
-        _ => Condition::Name(spanned(&c, c.as_str().to_owned())),
+    let span = span_of(&pair);
+    match pair.as_rule() {
+        Rule::condition | Rule::conjunction => {
+            let is_or = pair.as_rule() == Rule::condition;
+            let mut parts: Vec<Condition> =
+                inner(pair).filter(|p| !matches!(p.as_rule(), Rule::or_kw | Rule::and_kw)).map(condition).collect();
+            if parts.len() == 1 {
+                return parts.pop().expect("one part");
+            }
+            let kind = if is_or { ConditionKind::Any(parts) } else { ConditionKind::All(parts) };
+            Condition { kind, span }
+        }
+        Rule::negation => {
+            let mut it = inner(pair);
+            let p = it.next().expect("negation part");
+            if p.as_rule() == Rule::not_kw {
+                let operand = condition(it.next().expect("operand"));
+                Condition { kind: ConditionKind::Not(Box::new(operand)), span }
+            } else {
+                condition(p)
+            }
+        }
+        Rule::atom => condition(first(pair)),
+        Rule::group => Condition { kind: ConditionKind::Group(Box::new(condition(first(pair)))), span },
+        Rule::script => Condition { kind: ConditionKind::Script(string(first(pair))), span },
+        Rule::relation => {
+            let mut it = inner(pair);
+            let lhs = expr(it.next().expect("lhs"));
+            let op = it.next().expect("operator");
+            let rhs = expr(it.next().expect("rhs"));
+            let kind = match op.as_rule() {
+                Rule::in_kw => ConditionKind::In { what: lhs, region: rhs },
+                Rule::is_kw => ConditionKind::Is { what: lhs, value: rhs },
+                _ => ConditionKind::Compare { lhs, op: spanned(&op, op.as_str().to_owned()), rhs },
+            };
+            Condition { kind, span }
+        }
+        _ => Condition { kind: ConditionKind::Name(spanned(&pair, pair.as_str().to_owned())), span },
     }
 }
 
@@ -464,7 +565,7 @@ mod tests {
         let ExprKind::Quantity { value, unit: Some(u), .. } = &args[0].value.kind else { panic!() };
         assert_eq!((*value, u.value.as_str()), (10.0, "m"));
         let StatementKind::End(conds) = &d.statements[3].kind else { panic!() };
-        assert!(matches!(conds[1], Condition::Steps(_)));
+        assert!(matches!(&conds[1].kind, ConditionKind::Compare { op, .. } if op.value == ">="));
     }
 
     #[test]

@@ -156,6 +156,7 @@ fixtures! {
     end_only_condition
     condition_unknown_player
     builtin_difficulty_out_of_range
+    unreachable_stage
 }
 
 #[test]

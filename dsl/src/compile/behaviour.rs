@@ -349,7 +349,3 @@ fn pass_kind(e: &Expr, r: &mut Reader<'_>) -> Option<PassKind> {
         }
     }
 }
-
-#[cfg(test)]
-#[path = "behaviour_tests.rs"]
-mod tests;

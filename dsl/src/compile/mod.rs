@@ -448,18 +448,3 @@ fn description(docs: &[String]) -> String {
     }
     out.trim().to_owned()
 }
-
-/// Resolves the one scenario of `text` without the final checks (team sizes, the engine's
-/// validation): what behaviour and condition unit tests inspect while the engine refuses to play
-/// behaviours. `None` when resolving failed; the diagnostics either way.
-#[cfg(test)]
-pub(crate) fn resolve_unchecked(text: &str) -> (Option<Scenario>, Diagnostics) {
-    let mut c = Compiler::default();
-    let Some(main) = c.load(text.to_owned(), "test.tl", None, false, None) else { return (None, c.diags) };
-    c.prelude = c.load(PRELUDE.to_owned(), "prelude.tl", None, true, None);
-    let Some(def) = c.definitions(main).find(|(_, d)| d.kind == Kind::Scenario).map(|(i, _)| i) else {
-        return (None, c.diags);
-    };
-    let resolved = c.resolve(main, def).map(|(s, _)| s);
-    (resolved, c.diags)
-}

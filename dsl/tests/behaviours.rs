@@ -341,6 +341,7 @@ fn every_example_scenario_compiles_without_warnings_and_plays() {
     for path in paths {
         let text = std::fs::read_to_string(&path).expect("readable");
         assert!(text.starts_with("///"), "{}: starts with a doc line", path.display());
+        assert_eq!(format_source(&text, "example.tl").expect("formats"), text, "{}: formatted", path.display());
         let compiled = compile_file(&path).unwrap_or_else(|d| panic!("{}:\n{}", path.display(), d.render_plain()));
         assert!(compiled.warnings.items.is_empty(), "{}:\n{}", path.display(), compiled.warnings.render_plain());
         let s = compiled.scenario;

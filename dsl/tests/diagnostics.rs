@@ -157,6 +157,7 @@ fixtures! {
     condition_unknown_player
     builtin_difficulty_out_of_range
     unreachable_stage
+    syntax_does_without_behaviour
 }
 
 #[test]

@@ -13,8 +13,18 @@ fn sources() -> Vec<&'static str> {
     let mut all: Vec<&str> =
         stdlib::names().iter().copied().chain(stdlib::test_names()).filter_map(stdlib::tl_source).collect();
     all.push(touchline_dsl::PRELUDE);
+    all.extend(EXAMPLES);
     all
 }
+
+/// The example scenarios with behaviours and conditions.
+const EXAMPLES: [&str; 5] = [
+    include_str!("../../examples/scenarios/defend_zigzag_dribbler.tl"),
+    include_str!("../../examples/scenarios/keep_ball_under_press.tl"),
+    include_str!("../../examples/scenarios/keeper_one_on_one.tl"),
+    include_str!("../../examples/scenarios/mark_and_intercept.tl"),
+    include_str!("../../examples/scenarios/two_vs_two_box_defence.tl"),
+];
 
 /// Tokens a mutation may insert: the language's keywords and punctuation, and a few troublemakers
 /// (non-ASCII text, huge and odd numbers, an import, names that create cycles).
@@ -105,6 +115,27 @@ const TOKENS: &[&str] = &[
     "difficulty",
     "true",
     "false",
+    "does",
+    "do",
+    "then",
+    "shoot",
+    "until",
+    "and",
+    "is",
+    "behaviour",
+    "me",
+    "done",
+    "owner",
+    "game_mode",
+    "<",
+    "==",
+    "!=",
+    "press",
+    "move_to((0.5, 0))",
+    "pass_to(left[1], high)",
+    "builtin(2)",
+    "does press then idle",
+    "until distance(ball, me) < 5 m",
 ];
 
 /// One edit of the text.

@@ -54,6 +54,7 @@ pub(crate) fn info_dict<'py>(py: Python<'py>, info: &StepInfo) -> PyResult<Bound
     d.set_item("game_mode", info.game_mode as u8)?;
     d.set_item("score_reward", info.score_reward)?;
     d.set_item("checkpoint_reward", info.checkpoint_reward)?;
+    d.set_item("event_reward", info.event_reward)?;
     d.set_item("script_reward", info.script_reward)?;
     d.set_item("script_errors", info.script_errors)?;
     d.set_item("steps", info.steps)?;

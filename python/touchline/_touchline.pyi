@@ -91,7 +91,8 @@ class Env:
 
         Returns:
             (observation, rewards (M,) float32, terminated, truncated, info) where info has
-            score [left, right], steps_left, game_mode, score_reward, checkpoint_reward, script_reward,
+            score [left, right], steps_left, game_mode, score_reward, checkpoint_reward, event_reward
+            (the scenario's `reward on …` terms, summed over controllers), script_reward,
             script_errors, steps, episode, and script_log (lines scripts printed) when not empty.
 
         Raises:

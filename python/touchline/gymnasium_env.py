@@ -87,7 +87,8 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
 
     `info` carries `score` ([left, right] goals), `steps_left`, `game_mode` (0 normal, 1 kickoff,
     2 goal kick, 3 free kick, 4 corner, 5 throw-in, 6 penalty), `score_reward` (the left team's
-    scoring reward this step), `checkpoint_reward`, `steps`, `episode`, and with M > 1 `rewards`.
+    scoring reward this step), `checkpoint_reward`, `event_reward` (the scenario's `reward on …`
+    terms), `steps`, `episode`, and with M > 1 `rewards`.
 
     ## Arguments
 

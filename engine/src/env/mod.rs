@@ -22,7 +22,7 @@ use crate::game::{Action, ActionSet, GameMode, Kick, KickTarget, Match, PlayerIn
 use crate::geometry::Side;
 use crate::obs::RawObservation;
 use crate::player::{DRIBBLE_SPEED, WALK_SPEED};
-use crate::reward::{CheckpointTracker, RewardPlan, scoring_reward};
+use crate::reward::{CheckpointTracker, EventProgress, EventRewards, RewardPlan, Viewpoint, scoring_reward};
 use crate::scenario::Scenario;
 use end::EndTracker;
 
@@ -57,6 +57,9 @@ pub struct StepInfo {
     pub checkpoint_reward: f32,
     /// Reward paid this step by the hooks' script terms, summed over controllers.
     pub script_reward: f32,
+    /// Reward paid this step by the event terms (`reward on …`), summed over controllers.
+    #[serde(default)]
+    pub event_reward: f32,
     /// Script failures absorbed this episode under the "warn" policy (each paid zero).
     pub script_errors: u32,
     /// Steps taken this episode.
@@ -82,6 +85,8 @@ pub struct Env {
     fixed_control: [bool; 2],
     /// The reward terms paid each step.
     reward_plan: RewardPlan,
+    /// The event terms (`reward on …`) paid each step.
+    event_rewards: EventRewards,
     /// The saved match every episode starts from (the scenario's `start_state`).
     start: Option<Box<Match>>,
     /// Identifies scenario and configuration, so that snapshots restore only where they belong.
@@ -187,6 +192,7 @@ impl Env {
         let n = controllers.len();
         let game = Match::new(&scenario, 0, seed);
         let reward_plan = RewardPlan::new(&scenario, &config, hooks.is_some())?;
+        let event_rewards = EventRewards::new(&scenario);
         let start = match &scenario.start_state {
             Some(bytes) => Some(Box::new(snapshot::start_match(&scenario, bytes)?)),
             None => None,
@@ -218,10 +224,6 @@ impl Env {
             hook_rewards: vec![0.0; n],
             reward_plan,
             start,
-            fixed_control: [agents[0] == controllable[0], agents[1] == controllable[1]],
-            scenario,
-            config,
-            fingerprint: 0,
             state: EnvState {
                 seed,
                 episode: 0,
@@ -232,6 +234,8 @@ impl Env {
                 observations: vec![RawObservation::default(); n],
                 rewards: vec![0.0; n],
                 checkpoints: vec![CheckpointTracker::default(); n],
+                events: vec![EventProgress::default(); n * event_rewards.len()],
+                previous_ball: vec![[0.0; 2]; n],
                 end: EndTracker::default(),
                 info: StepInfo::default(),
                 steps: 0,
@@ -240,6 +244,11 @@ impl Env {
                 waiting_for_game: 0,
                 hook_error: None,
             },
+            event_rewards,
+            fixed_control: [agents[0] == controllable[0], agents[1] == controllable[1]],
+            scenario,
+            config,
+            fingerprint: 0,
         };
         env.fingerprint = env.compute_fingerprint();
         env.begin(0);
@@ -298,6 +307,7 @@ impl Env {
         for t in &mut self.state.checkpoints {
             *t = CheckpointTracker::default();
         }
+        self.state.events.fill(EventProgress::default());
         for side in Side::BOTH {
             let (start, len) = self.controller_span(side);
             control::initial(&self.state.game, side, &mut self.state.controlled[start..start + len]);
@@ -311,6 +321,7 @@ impl Env {
             game_mode: self.state.game.mode(),
             score_reward: 0.0,
             checkpoint_reward: 0.0,
+            event_reward: 0.0,
             script_reward: 0.0,
             script_errors: 0,
             steps: 0,
@@ -363,6 +374,9 @@ impl Env {
             None => None,
         };
         self.reward_plan = reward_plan;
+        self.event_rewards = EventRewards::new(&scenario);
+        // Sized here, once per accepted edit, so that stepping never allocates.
+        self.state.events = vec![EventProgress::default(); n * self.event_rewards.len()];
         self.start = start;
         self.fixed_control = [agents[0] == controllable[0], agents[1] == controllable[1]];
         self.scenario = scenario;
@@ -457,6 +471,9 @@ impl Env {
                 self.fixed_control[side.index()],
             );
         }
+        for (previous, obs) in self.state.previous_ball.iter_mut().zip(&self.state.observations) {
+            *previous = [obs.ball[0], obs.ball[1]];
+        }
         self.refresh_observations();
 
         let score = self.state.game.score();
@@ -476,6 +493,7 @@ impl Env {
             checkpoint_total += bonus;
             self.state.rewards[i] = plan.scoring * r + bonus;
         }
+        let event_total = self.pay_event_rewards();
         let terminated = self.state.end.terminated(&self.scenario, &self.state.game, self.state.steps);
         let truncated = self.state.steps > self.scenario.game_duration;
         let (hooks_end, script_reward, script_errors) = self.run_hooks()?;
@@ -487,6 +505,7 @@ impl Env {
             game_mode: self.state.game.mode(),
             score_reward: scoring,
             checkpoint_reward: checkpoint_total,
+            event_reward: event_total,
             script_reward,
             script_errors: self.state.info.script_errors + script_errors,
             steps: self.state.steps,
@@ -539,6 +558,28 @@ impl Env {
             self.state.game.set_script_input(g, input, sticky);
         }
         Ok(())
+    }
+
+    /// Adds each controller's event rewards for the step just played; returns their sum.
+    fn pay_event_rewards(&mut self) -> f32 {
+        let terms = self.event_rewards.len();
+        if terms == 0 {
+            return 0.0;
+        }
+        let mut total = 0.0;
+        for i in 0..self.state.controllers.len() {
+            let view = Viewpoint {
+                side: self.state.controllers[i].side,
+                player: self.state.controlled[i],
+                observation: &self.state.observations[i],
+                previous_ball: self.state.previous_ball[i],
+            };
+            let progress = &mut self.state.events[i * terms..(i + 1) * terms];
+            let paid = self.event_rewards.pay(progress, self.state.game.events(), &view);
+            self.state.rewards[i] += paid;
+            total += paid;
+        }
+        total
     }
 
     /// Runs the hooks after a step: adds their rewards and returns (end, reward paid, errors
@@ -640,7 +681,8 @@ impl Env {
         &self.state.observations
     }
 
-    /// Rewards of the last step, one per controller (scoring + checkpoints + script terms).
+    /// Rewards of the last step, one per controller (scoring + checkpoints + event terms +
+    /// script terms).
     pub fn rewards(&self) -> &[f32] {
         &self.state.rewards
     }

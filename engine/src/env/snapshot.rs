@@ -11,7 +11,7 @@ use super::{Controller, Env, StepInfo};
 use crate::error::EngineError;
 use crate::game::Match;
 use crate::obs::RawObservation;
-use crate::reward::CheckpointTracker;
+use crate::reward::{CheckpointTracker, EventProgress};
 
 /// Bytes every serialised snapshot starts with.
 const MAGIC: &[u8; 6] = b"TLSNAP";
@@ -33,6 +33,11 @@ pub(crate) struct EnvState {
     pub(super) observations: Vec<RawObservation>,
     pub(super) rewards: Vec<f32>,
     pub(super) checkpoints: Vec<CheckpointTracker>,
+    /// Event-reward progress, controller-major: the terms of controller `i` are
+    /// `events[i * terms .. (i + 1) * terms]`.
+    pub(super) events: Vec<EventProgress>,
+    /// The ball's (x, y) in each controller's team frame when the step began (for `ball enters`).
+    pub(super) previous_ball: Vec<[f32; 2]>,
     pub(super) end: EndTracker,
     pub(super) info: StepInfo,
     pub(super) steps: u32,
@@ -63,7 +68,7 @@ fn fnv(bytes: &[u8]) -> u64 {
 impl Snapshot {
     /// Version of the byte format written by [`Snapshot::to_bytes`]; bumped whenever the state's
     /// layout changes. Reading another version is an error.
-    pub const FORMAT_VERSION: u16 = 3;
+    pub const FORMAT_VERSION: u16 = 4;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {

@@ -70,6 +70,9 @@ pub struct Match {
     pub(crate) carry_distance: f32,
     /// Player who touched the ball last.
     pub(crate) last_touch: Option<usize>,
+    /// Player who last had the ball at his feet (cleared at kickoffs): a trap by an opponent of
+    /// his is a [`Event::PossessionWon`].
+    pub(crate) possessor: Option<usize>,
     pub(crate) score: [u32; 2],
     pub(crate) mode: GameMode,
     pub(crate) phase: Phase,
@@ -165,6 +168,7 @@ impl Match {
             owner_ticks: 0,
             carry_distance: 0.5,
             last_touch: None,
+            possessor: None,
             score: [0, 0],
             mode: GameMode::Normal,
             phase: Phase::Play,
@@ -360,6 +364,7 @@ impl Match {
         self.owner = None;
         self.owner_ticks = 0;
         self.last_touch = last_touch.map(|(side, i)| self.global_index(side, i));
+        self.possessor = None;
         self.offside_watch = Watch::default();
         self.pending_pass = None;
     }

@@ -137,10 +137,27 @@ impl Match {
         }
         if let Some(passer) = self.pending_pass.take()
             && passer != g
-            && self.players[passer].side == side
         {
-            self.record(Event::PassCompleted { side });
+            let (passing, player) = (self.players[passer].side, self.players[passer].index);
+            if passing == side {
+                self.record(Event::PassCompleted { side, player });
+            } else {
+                self.record(Event::PassIntercepted { side: passing, player, by: self.players[g].index });
+            }
         }
+    }
+
+    /// `g` has taken the ball at his feet in open play: a possession won when a player of the
+    /// other team had it last.
+    fn gained(&mut self, g: usize) {
+        let side = self.players[g].side;
+        if let Some(last) = self.possessor
+            && self.players[last].side != side
+        {
+            let (player, from) = (self.players[g].index, self.players[last].index);
+            self.record(Event::PossessionWon { side, player, from });
+        }
+        self.possessor = Some(g);
     }
 
     /// The nearest player within reach of a loose ball traps, catches or deflects it.
@@ -209,6 +226,7 @@ impl Match {
             self.carry_distance = to_ball.length().clamp(0.3, STILL_BALL_REACH);
             self.players[g].facing = to_ball.normalize_or(self.players[g].facing);
             self.owner = Some(g);
+            self.gained(g);
             self.ball.velocity = self.players[g].velocity.extend(0.0);
             self.ball.position.z = BALL_RADIUS;
             return;

@@ -288,11 +288,20 @@ impl Match {
         let (ticks, restart) = match stoppage {
             Stoppage::Goal { scorer } => {
                 self.score[scorer.index()] += 1;
-                self.record(Event::Goal { side: scorer });
+                let player = self.last_touch.filter(|&g| self.players[g].side == scorer).map(|g| self.players[g].index);
+                self.record(Event::Goal { side: scorer, player });
                 self.mode = GameMode::KickOff;
                 (GOAL_DEAD_TICKS, rules::kickoff::after_goal(scorer))
             }
-            Stoppage::Out { restart } | Stoppage::Offside { restart, .. } | Stoppage::Foul { restart, .. } => {
+            Stoppage::Out { restart } => {
+                // The restart goes against the team that touched the ball last.
+                let side = restart.side.opponent();
+                let player = self.last_touch.filter(|&g| self.players[g].side == side).map(|g| self.players[g].index);
+                self.record(Event::OutOfPlay { side, player });
+                self.mode = restart.mode;
+                (OUT_DEAD_TICKS, restart)
+            }
+            Stoppage::Offside { restart, .. } | Stoppage::Foul { restart, .. } => {
                 self.mode = restart.mode;
                 (OUT_DEAD_TICKS, restart)
             }

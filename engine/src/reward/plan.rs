@@ -49,6 +49,8 @@ impl RewardPlan {
                 }
                 // The env's hooks pay script terms.
                 RewardKind::Script { .. } if hooks => {}
+                // The env's event rewards ([`super::EventRewards`]) pay event terms.
+                RewardKind::Event(_) => {}
                 RewardKind::Script { path } => {
                     return Err(EngineError::InvalidScenario {
                         reason: format!(

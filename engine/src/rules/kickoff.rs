@@ -68,6 +68,8 @@ pub(crate) fn set_up(m: &mut Match, kicking: Side) {
     }
     m.ball = crate::physics::Ball::at_rest(Vec2::ZERO);
     m.owner = None;
+    // Nobody has the ball at a kickoff: the first trap wins no possession.
+    m.possessor = None;
     m.taker = None;
     m.mode = GameMode::Normal;
 }

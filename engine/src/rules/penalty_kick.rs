@@ -85,6 +85,8 @@ pub(crate) fn set_up(m: &mut Match, restart: Restart) {
     m.owner = Some(taker);
     m.carry_distance = 0.5;
     m.last_touch = Some(taker);
+    // The referee hands the ball over: the taker's team has it without winning it.
+    m.possessor = Some(taker);
     m.taker = Some(taker);
     m.mode = GameMode::Penalty;
 }

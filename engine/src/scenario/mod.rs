@@ -9,6 +9,7 @@
 
 mod behaviour;
 mod condition;
+mod event_reward;
 mod placement;
 mod random;
 mod terms;
@@ -17,6 +18,7 @@ use serde::{Deserialize, Serialize};
 
 pub use behaviour::{Behaviour, PassKind, Stage};
 pub use condition::{Comparison, Condition, Owner, Target};
+pub use event_reward::{EventAtom, EventKind, EventReward, EventStep, EventTeam, MAX_EVENT_GROUP, MAX_EVENT_SEQUENCE};
 pub use placement::{Body, MAX_PLACEMENT_TRIES, Placement, Require};
 pub use random::{Distribution, PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Region, Sample, Spot};
 pub use terms::{EndCondition, RewardKind, RewardTerm};

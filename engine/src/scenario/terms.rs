@@ -3,6 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::event_reward::EventReward;
 use super::random::Region;
 
 /// One weighted reward term; a controller's reward is the sum of `weight × term` over the terms.
@@ -41,6 +42,8 @@ pub enum RewardKind {
         /// Script path.
         path: String,
     },
+    /// The term's weight, paid when a pattern of match events completes (`reward on …`).
+    Event(EventReward),
 }
 
 /// An episode-end condition beyond GRF's three flags (score, out of play, possession change).
@@ -77,6 +80,7 @@ impl RewardTerm {
             RewardKind::Checkpoints { count, value } if !(1..=100).contains(count) || !value.is_finite() => {
                 Err(format!("checkpoints need a count in 1..=100 and a finite value (got {count}, {value})"))
             }
+            RewardKind::Event(reward) => reward.check(),
             _ => Ok(()),
         }
     }

@@ -1,5 +1,7 @@
-//! The engine's event stream: what happened this step, in order (goals, shots, passes, fouls,
-//! cards, offsides, restarts). [`crate::stats::MatchStats`] is folded from it.
+//! The engine's event stream: what happened this step, in order (goals, shots, passes and their
+//! outcome, possession won, the ball going out, fouls, cards, offsides, restarts).
+//! [`crate::stats::MatchStats`] is folded from it and the env's event rewards read it. Events are
+//! observations: recording one never draws from the random stream or changes the play.
 
 use serde::{Deserialize, Serialize};
 
@@ -18,6 +20,9 @@ pub enum Event {
     Goal {
         /// The team credited.
         side: Side,
+        /// The scorer (index in his team): the last player of `side` to touch the ball; `None`
+        /// for an own goal or a ball nobody touched.
+        player: Option<usize>,
     },
     /// A shot by `player` of `side`; `on_target` when its path crosses the goal line between the
     /// posts and under the bar.
@@ -40,6 +45,37 @@ pub enum Event {
     PassCompleted {
         /// The passing team.
         side: Side,
+        /// The passer (index in his team).
+        player: usize,
+    },
+    /// The last pass of `side` was next touched by an opponent (a tackle, a trap, a deflection
+    /// or a keeper's save).
+    PassIntercepted {
+        /// The passing team.
+        side: Side,
+        /// The passer (index in his team).
+        player: usize,
+        /// The opponent who touched it (index in his team).
+        by: usize,
+    },
+    /// `player` of `side` took the ball at his feet in open play when a player of the other team
+    /// was the last to have it there (a ball won by a tackle, an interception or a loose ball).
+    /// Set pieces and kickoffs hand the ball over without this event.
+    PossessionWon {
+        /// The team that won the ball.
+        side: Side,
+        /// The player who has it now (index in his team).
+        player: usize,
+        /// The opponent who had it last (index in his team).
+        from: usize,
+    },
+    /// The ball went wholly over a touch line or a goal line outside the goal (Law 9), last
+    /// touched by `side` (the team the restart goes against).
+    OutOfPlay {
+        /// The team that put it out.
+        side: Side,
+        /// The last player to touch it (index in his team); `None` when nobody had.
+        player: Option<usize>,
     },
     /// A foul by `player` of `side` (Law 12).
     Foul {

@@ -24,6 +24,15 @@ pub struct TeamStats {
     pub passes: u32,
     /// Passes whose next touch was by a team-mate.
     pub passes_completed: u32,
+    /// Passes whose next touch was by an opponent.
+    #[serde(default)]
+    pub passes_intercepted: u32,
+    /// Times the team won the ball in open play from a player of the other team.
+    #[serde(default)]
+    pub possessions_won: u32,
+    /// Times the team put the ball out of play (over a touch line or a goal line, goals aside).
+    #[serde(default)]
+    pub out_of_play: u32,
     /// Ticks (10 ms) of play with the ball at a player of this team's feet, or last touched by
     /// this team while loose.
     pub possession_ticks: u64,
@@ -58,14 +67,17 @@ impl MatchStats {
     /// Counts `event`.
     pub(crate) fn record(&mut self, event: Event) {
         match event {
-            Event::Goal { side } => self.teams[side.index()].goals += 1,
+            Event::Goal { side, .. } => self.teams[side.index()].goals += 1,
             Event::Shot { side, on_target, .. } => {
                 let t = &mut self.teams[side.index()];
                 t.shots += 1;
                 t.shots_on_target += u32::from(on_target);
             }
             Event::Pass { side, .. } => self.teams[side.index()].passes += 1,
-            Event::PassCompleted { side } => self.teams[side.index()].passes_completed += 1,
+            Event::PassCompleted { side, .. } => self.teams[side.index()].passes_completed += 1,
+            Event::PassIntercepted { side, .. } => self.teams[side.index()].passes_intercepted += 1,
+            Event::PossessionWon { side, .. } => self.teams[side.index()].possessions_won += 1,
+            Event::OutOfPlay { side, .. } => self.teams[side.index()].out_of_play += 1,
             Event::Foul { side, .. } => self.teams[side.index()].fouls += 1,
             Event::Advantage { .. } => {}
             Event::YellowCard { side, .. } => self.teams[side.index()].yellow_cards += 1,
@@ -105,11 +117,16 @@ mod tests {
         s.record(Event::Shot { side: Side::Left, player: 9, on_target: true });
         s.record(Event::Shot { side: Side::Left, player: 9, on_target: false });
         s.record(Event::Pass { side: Side::Right, player: 3 });
-        s.record(Event::PassCompleted { side: Side::Right });
+        s.record(Event::PassCompleted { side: Side::Right, player: 3 });
+        s.record(Event::PassIntercepted { side: Side::Right, player: 3, by: 5 });
+        s.record(Event::PossessionWon { side: Side::Left, player: 5, from: 2 });
+        s.record(Event::OutOfPlay { side: Side::Left, player: Some(5) });
         s.record(Event::Restart { side: Side::Right, mode: GameMode::Corner });
         s.record(Event::YellowCard { side: Side::Left, player: 4 });
         assert_eq!((s.teams[0].shots, s.teams[0].shots_on_target, s.teams[0].yellow_cards), (2, 1, 1));
         assert_eq!((s.teams[1].passes, s.teams[1].passes_completed, s.teams[1].corners), (1, 1, 1));
+        assert_eq!(s.teams[1].passes_intercepted, 1);
+        assert_eq!((s.teams[0].possessions_won, s.teams[0].out_of_play), (1, 1));
         assert_eq!(s.possession_percent(Side::Left), 50.0);
         s.teams[0].possession_ticks = 30;
         s.teams[1].possession_ticks = 10;

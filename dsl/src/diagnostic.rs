@@ -75,6 +75,18 @@ pub enum Code {
     /// `score`, `out_of_play`, `possession_change` or `script` where only the condition language
     /// fits (inside `and`/`not`/parentheses, or in `until`).
     EndOnlyCondition,
+    /// `reward on` names an event that is not known.
+    UnknownEvent,
+    /// An event given a region it does not take, or lacking one it needs (`ball` without
+    /// `enters REGION`).
+    EventRegion,
+    /// An event's scope that cannot apply: `by player` on an event no player of the
+    /// controller's team does (`goal_against`, `ball enters`, `opponent_…`), or another word.
+    EventScope,
+    /// `once` and `each time` together, or one of them twice.
+    EventRepeat,
+    /// `any of ()` / `all of ()` with no event.
+    EmptyEventGroup,
     /// Warning: a player or ball outside the lines (but inside the rim, so still playable).
     OutsideLines,
     /// Warning: the left team has no controllable player, so an agent has no one to drive.
@@ -90,7 +102,7 @@ pub enum Code {
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 35] = [
+    pub const ALL: [Code; 40] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -121,6 +133,11 @@ impl Code {
         Code::UnknownMeasure,
         Code::MisplacedShoot,
         Code::EndOnlyCondition,
+        Code::UnknownEvent,
+        Code::EventRegion,
+        Code::EventScope,
+        Code::EventRepeat,
+        Code::EmptyEventGroup,
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
@@ -161,6 +178,11 @@ impl Code {
             Code::UnknownMeasure => "tl::E127",
             Code::MisplacedShoot => "tl::E128",
             Code::EndOnlyCondition => "tl::E129",
+            Code::UnknownEvent => "tl::E130",
+            Code::EventRegion => "tl::E131",
+            Code::EventScope => "tl::E132",
+            Code::EventRepeat => "tl::E133",
+            Code::EmptyEventGroup => "tl::E134",
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",

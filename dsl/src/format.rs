@@ -193,6 +193,7 @@ impl Formatter<'_> {
                 }
                 s
             }
+            StatementKind::RewardOn(ro) => reward_on(ro),
             StatementKind::End(conditions) => {
                 let c: Vec<String> = conditions.iter().map(condition).collect();
                 format!("end when {}", c.join(" or "))
@@ -261,6 +262,41 @@ fn condition(c: &Condition) -> String {
         ConditionKind::Script(p) => format!("script \"{}\"", p.value),
         ConditionKind::Name(n) => n.value.clone(),
     }
+}
+
+/// `reward on A then any of (B, C) once 0.5`.
+fn reward_on(ro: &syntax::RewardOn) -> String {
+    let steps: Vec<String> = ro
+        .sequence
+        .iter()
+        .map(|step| match step {
+            syntax::EventStep::One(e) => event(e),
+            syntax::EventStep::Group { all, events, .. } => {
+                let events: Vec<String> = events.iter().map(event).collect();
+                format!("{} of ({})", if *all { "all" } else { "any" }, events.join(", "))
+            }
+        })
+        .collect();
+    let mut s = format!("reward on {}", steps.join(" then "));
+    for r in &ro.repeats {
+        s.push_str(match r.value {
+            syntax::Repeat::Once => " once",
+            syntax::Repeat::EachTime => " each time",
+        });
+    }
+    let _ = write!(s, " {}", expr(&ro.value));
+    s
+}
+
+fn event(e: &syntax::Event) -> String {
+    let mut s = e.name.value.clone();
+    if let Some((word, region)) = &e.region {
+        let _ = write!(s, " {} {}", word.value, expr(region));
+    }
+    if let Some((word, target)) = &e.scope {
+        let _ = write!(s, " {} {}", word.value, target.value);
+    }
+    s
 }
 
 fn arguments(args: &[Argument]) -> String {

@@ -5,8 +5,8 @@
 use std::fmt::Write;
 
 use touchline_engine::scenario::{
-    Behaviour, Comparison, Condition, Distribution, EndCondition, Owner, PassKind, Region, Require, RewardKind, Sample,
-    Spot, Stage, Target,
+    Behaviour, Comparison, Condition, Distribution, EndCondition, EventAtom, EventKind, EventReward, EventStep, EventTeam,
+    Owner, PassKind, Region, Require, RewardKind, Sample, Spot, Stage, Target,
 };
 use touchline_engine::{GameMode, PlayerEntry, Scenario, Side};
 
@@ -118,12 +118,17 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
         let _ = writeln!(out, "  require distance({}, {}) {op} {} m", body(*a), body(*b), number(*metres));
     }
     for t in &s.rewards {
+        if let RewardKind::Event(reward) = &t.reward {
+            let _ = writeln!(out, "  {}", event_reward(reward, t.weight));
+            continue;
+        }
         let term = match &t.reward {
             RewardKind::Scoring => "scoring".to_owned(),
             RewardKind::Checkpoints { count, value } => {
                 format!("checkpoint(count: {count}, value: {})", number(*value))
             }
             RewardKind::Script { path } => format!("script \"{path}\""),
+            RewardKind::Event(_) => unreachable!("printed above"),
         };
         if t.weight == 1.0 {
             let _ = writeln!(out, "  reward {term}");
@@ -292,6 +297,65 @@ fn region(r: &Region) -> String {
         }
         Region::Circle { x, y, r } => format!("circle({}, {}, {})", number(*x), number(*y), number(*r)),
     }
+}
+
+/// `reward on A then any of (B, C) once 0.5`.
+fn event_reward(reward: &EventReward, value: f32) -> String {
+    let steps: Vec<String> = reward
+        .sequence
+        .iter()
+        .map(|step| match step {
+            EventStep::One(a) => event_atom(a),
+            EventStep::AnyOf(atoms) | EventStep::AllOf(atoms) => {
+                let kind = if matches!(step, EventStep::AllOf(_)) { "all" } else { "any" };
+                format!("{kind} of ({})", atoms.iter().map(event_atom).collect::<Vec<_>>().join(", "))
+            }
+        })
+        .collect();
+    let repeat = if reward.once { "once" } else { "each time" };
+    format!("reward on {} {repeat} {}", steps.join(" then "), number(value))
+}
+
+fn event_atom(a: &EventAtom) -> String {
+    let (name, region) = match &a.event {
+        EventKind::GoalFor => ("goal_for", None),
+        EventKind::GoalAgainst => ("goal_against", None),
+        EventKind::Shot => ("shot", None),
+        EventKind::ShotOnTarget => ("shot_on_target", None),
+        EventKind::Pass => ("pass", None),
+        EventKind::PassCompleted => ("pass_completed", None),
+        EventKind::PassIntercepted => ("pass_intercepted", None),
+        EventKind::PossessionWon => ("possession_won", None),
+        EventKind::PossessionLost => ("possession_lost", None),
+        EventKind::OutOfPlay => ("out_of_play", None),
+        EventKind::Foul => ("foul", None),
+        EventKind::Card => ("card", None),
+        EventKind::YellowCard => ("yellow_card", None),
+        EventKind::RedCard => ("red_card", None),
+        EventKind::Offside => ("offside", None),
+        EventKind::BallEnters(r) => ("ball", Some(format!("enters {}", region(r)))),
+        EventKind::BallIn(r) => ("ball", Some(format!("in {}", region(r)))),
+        EventKind::HasBall => ("has_ball", None),
+        EventKind::HasBallIn(r) => ("has_ball", Some(format!("in {}", region(r)))),
+    };
+    // The language writes the other team's events `opponent_…`; goal_against and
+    // possession_lost already are the other side of goal_for and possession_won.
+    let mut text = match (a.team, name) {
+        (EventTeam::Own, _) => name.to_owned(),
+        (EventTeam::Opponent, "goal_for") => "goal_against".to_owned(),
+        (EventTeam::Opponent, "goal_against") => "goal_for".to_owned(),
+        (EventTeam::Opponent, "possession_won") => "possession_lost".to_owned(),
+        (EventTeam::Opponent, "possession_lost") => "possession_won".to_owned(),
+        (EventTeam::Opponent, _) => format!("opponent_{name}"),
+    };
+    if let Some(region) = region {
+        text.push(' ');
+        text.push_str(&region);
+    }
+    if a.by_player {
+        text.push_str(" by player");
+    }
+    text
 }
 
 fn body(b: touchline_engine::scenario::Body) -> String {

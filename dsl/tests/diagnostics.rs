@@ -158,6 +158,11 @@ fixtures! {
     builtin_difficulty_out_of_range
     unreachable_stage
     syntax_does_without_behaviour
+    unknown_event
+    event_region
+    event_scope
+    event_repeat
+    empty_event_group
 }
 
 #[test]

@@ -89,7 +89,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             StatementKind::Behaviour { player, .. } => {
                 format!("behaviour {}", r.source.inner().get(player.span.start..player.span.end).unwrap_or_default())
             }
-            StatementKind::Require { .. } | StatementKind::Reward { .. } => String::new(),
+            StatementKind::Require { .. } | StatementKind::Reward { .. } | StatementKind::RewardOn(_) => String::new(),
         };
         // A team block may be long: its first line (`team left …`) stands for it.
         let head = match &st.kind {
@@ -142,6 +142,15 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
                     if let (Some(reward), Some(weight)) = (reward_kind(term, r), weight) {
                         s.rewards.push(RewardTerm { reward, weight });
                     }
+                }
+            }
+            StatementKind::RewardOn(ro) => {
+                if !rewards_cleared {
+                    s.rewards.clear();
+                    rewards_cleared = true;
+                }
+                if let Some(term) = super::events::reward_on(ro, r) {
+                    s.rewards.push(term);
                 }
             }
             StatementKind::End(conditions) => deferred.ends = condition::end_when(conditions, s, r),

@@ -7,6 +7,7 @@ mod behaviour;
 mod body;
 mod check;
 mod condition;
+mod events;
 mod pitch;
 mod value;
 

@@ -106,6 +106,8 @@ pub enum StatementKind {
         /// `weight W`.
         weight: Option<Expr>,
     },
+    /// `reward on EVENTS [once | each time] VALUE`.
+    RewardOn(RewardOn),
     /// `end when COND or …`: the top-level disjuncts (`A or B and C` gives `[A, B and C]`).
     End(Vec<Condition>),
     /// `behaviour PLAYER does …`: a behaviour for a player of the teams given so far.
@@ -190,6 +192,55 @@ pub enum RewardTerm {
     Script(Spanned<String>),
     /// `scoring`, `checkpoint(…)`.
     Expr(Expr),
+}
+
+/// `reward on EVENTS [once | each time] VALUE`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RewardOn {
+    /// The steps joined by `then`, in order.
+    pub sequence: Vec<EventStep>,
+    /// `once` / `each time` as written (several are checked by the compiler).
+    pub repeats: Vec<Spanned<Repeat>>,
+    /// The value paid.
+    pub value: Expr,
+}
+
+/// `once` or `each time`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Repeat {
+    /// `once`.
+    Once,
+    /// `each time`.
+    EachTime,
+}
+
+/// One step of an event sequence.
+#[derive(Clone, Debug, PartialEq)]
+pub enum EventStep {
+    /// One event.
+    One(Event),
+    /// `any of (…)` (`all` false) or `all of (…)` (`all` true).
+    Group {
+        /// `all of` rather than `any of`.
+        all: bool,
+        /// The events listed (possibly none: the compiler reports it).
+        events: Vec<Event>,
+        /// The whole group.
+        span: Span,
+    },
+}
+
+/// `NAME [enters|in REGION] [by player|for team]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Event {
+    /// The event's name.
+    pub name: Spanned<String>,
+    /// `enters REGION` / `in REGION`: the word and the region.
+    pub region: Option<(Spanned<String>, Expr)>,
+    /// `by player` / `for team`: the two words.
+    pub scope: Option<(Spanned<String>, Spanned<String>)>,
+    /// The whole event.
+    pub span: Span,
 }
 
 /// `does STAGE then STAGE …`: a player's behaviour.

@@ -191,6 +191,12 @@ fn rule_name(rule: &Rule) -> String {
         Rule::team => "`team`",
         Rule::require => "`require`",
         Rule::reward => "`reward`",
+        Rule::reward_on | Rule::event_sequence | Rule::event_step | Rule::event => "an event",
+        Rule::event_group | Rule::group_kind | Rule::any_of | Rule::all_of => "`any of` or `all of`",
+        Rule::event_region | Rule::region_word => "`enters` or `in`",
+        Rule::scope | Rule::scope_word => "`by player` or `for team`",
+        Rule::repeat | Rule::once | Rule::each_time => "`once` or `each time`",
+        Rule::then_word => "`then`",
         Rule::end => "`end when`",
         Rule::start_from => "`start from`",
         Rule::setting => "a statement",
@@ -340,6 +346,7 @@ fn statement(pair: Pair<'_, Rule>) -> Statement {
             }
             StatementKind::Reward { terms, weight }
         }
+        Rule::reward_on => StatementKind::RewardOn(reward_on(pair)),
         Rule::end => {
             let c = condition(first(pair));
             StatementKind::End(match c.kind {
@@ -414,6 +421,58 @@ fn place(pair: Pair<'_, Rule>) -> Place {
     let is_at = p.as_rule() == Rule::at_place;
     let e = expr(first(p));
     if is_at { Place::At(e) } else { Place::In(e) }
+}
+
+fn reward_on(pair: Pair<'_, Rule>) -> RewardOn {
+    let mut sequence = Vec::new();
+    let mut repeats = Vec::new();
+    let mut value = None;
+    for p in inner(pair) {
+        match p.as_rule() {
+            Rule::event_sequence => {
+                for step in inner(p).filter(|s| s.as_rule() == Rule::event_step) {
+                    sequence.push(event_step(first(step)));
+                }
+            }
+            Rule::repeat => {
+                let r = first(p);
+                let kind = if r.as_rule() == Rule::once { Repeat::Once } else { Repeat::EachTime };
+                repeats.push(spanned(&r, kind));
+            }
+            _ => value = Some(expr(p)),
+        }
+    }
+    RewardOn { sequence, repeats, value: value.expect("the grammar requires a value") }
+}
+
+fn event_step(pair: Pair<'_, Rule>) -> EventStep {
+    if pair.as_rule() == Rule::event {
+        return EventStep::One(event(pair));
+    }
+    let span = span_of(&pair);
+    let mut it = inner(pair);
+    let all = first(it.next().expect("group kind")).as_rule() == Rule::all_of;
+    EventStep::Group { all, events: it.map(event).collect(), span }
+}
+
+fn event(pair: Pair<'_, Rule>) -> Event {
+    let span = span_of(&pair);
+    let mut it = inner(pair);
+    let n = it.next().expect("event name");
+    let mut e = Event { name: spanned(&n, n.as_str().to_owned()), region: None, scope: None, span };
+    for p in it {
+        let rule = p.as_rule();
+        let mut parts = inner(p);
+        let word = parts.next().expect("word");
+        let word = spanned(&word, word.as_str().to_owned());
+        let rest = parts.next().expect("region or scope");
+        if rule == Rule::event_region {
+            e.region = Some((word, expr(rest)));
+        } else {
+            e.scope = Some((word, spanned(&rest, rest.as_str().to_owned())));
+        }
+    }
+    e
 }
 
 /// `does STAGE then STAGE …`.

@@ -84,7 +84,7 @@ fn the_checkpoint_example_pays_what_the_builtin_checkpoint_pays() {
         state ^= state >> 7;
         state ^= state << 17;
         // Mostly run right with the ball and shoot, so that checkpoints and goals happen.
-        let action = if state % 3 == 0 {
+        let action = if state.is_multiple_of(3) {
             set.actions()[(state >> 8) as usize % set.len()]
         } else if state % 7 == 1 {
             Action::Shot
@@ -113,7 +113,7 @@ fn event_rewards_cost_no_step_of_play() {
     let mut without = with.clone();
     without.rewards.truncate(1);
     let config = EnvConfig { left_agents: 1, right_agents: 1, ..EnvConfig::default() };
-    let mut a = Env::with_config(with, config.clone(), 4).unwrap();
+    let mut a = Env::with_config(with, config, 4).unwrap();
     let mut b = Env::with_config(without, config, 4).unwrap();
     let set = a.action_set();
     for k in 0..1_000usize {

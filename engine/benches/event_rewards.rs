@@ -103,7 +103,7 @@ fn event_rewards(c: &mut Criterion) {
         let with = |terms: Vec<RewardTerm>| {
             let mut s = base.clone();
             s.rewards = std::iter::once(RewardTerm::scoring()).chain(terms).collect();
-            Env::with_config(s, config.clone(), 0).expect("env")
+            Env::with_config(s, config, 0).expect("env")
         };
         bench(c, name, "no_event_terms", with(Vec::new()), builtin);
         bench(c, name, "10_checkpoint_terms", with(checkpoints()), builtin);

@@ -51,7 +51,7 @@ fn compare(name: &str, config: EnvConfig, seed: u64, steps: usize) -> f32 {
         base,
         std::iter::once(RewardTerm::scoring()).chain((0..CHECKPOINT_COUNT).map(checkpoint_term)).collect(),
     );
-    let mut a = Env::with_config(builtin, config.clone(), seed).unwrap();
+    let mut a = Env::with_config(builtin, config, seed).unwrap();
     let mut b = Env::with_config(events, config, seed).unwrap();
     let mut policy = common::RandomPolicy::new(seed);
     let mut actions = vec![Action::Idle; a.num_controllers()];
@@ -115,7 +115,7 @@ fn event_rewards_leave_the_trajectory_alone() {
         vec![RewardTerm::scoring(), RewardTerm { reward: RewardKind::Event(shot), weight: 0.5 }],
     );
     let config = EnvConfig { action_set: touchline_engine::ActionSet::V2, ..EnvConfig::default() };
-    let mut a = Env::with_config(base, config.clone(), 3).unwrap();
+    let mut a = Env::with_config(base, config, 3).unwrap();
     let mut b = Env::with_config(rewarded, config, 3).unwrap();
     let (mut shots, mut paid) = (0, 0.0);
     for _ in 0..3_000 {

@@ -95,7 +95,7 @@ pub(crate) fn reward_on(ro: &RewardOn, r: &mut Reader<'_>) -> Option<RewardTerm>
     let once = repeat(&ro.repeats, r);
     let value = r.plain_number(&ro.value, "a reward value");
     let (once, value) = (once?, value?);
-    ok.then(|| RewardTerm { reward: RewardKind::Event(EventReward { sequence, once }), weight: value as f32 })
+    ok.then_some(RewardTerm { reward: RewardKind::Event(EventReward { sequence, once }), weight: value as f32 })
 }
 
 fn step_span(step: &syntax::EventStep) -> syntax::Span {

@@ -217,8 +217,8 @@ pub enum Repeat {
 /// One step of an event sequence.
 #[derive(Clone, Debug, PartialEq)]
 pub enum EventStep {
-    /// One event.
-    One(Event),
+    /// One event (boxed: an event is much larger than a group's list).
+    One(Box<Event>),
     /// `any of (…)` (`all` false) or `all of (…)` (`all` true).
     Group {
         /// `all of` rather than `any of`.

@@ -447,7 +447,7 @@ fn reward_on(pair: Pair<'_, Rule>) -> RewardOn {
 
 fn event_step(pair: Pair<'_, Rule>) -> EventStep {
     if pair.as_rule() == Rule::event {
-        return EventStep::One(event(pair));
+        return EventStep::One(Box::new(event(pair)));
     }
     let span = span_of(&pair);
     let mut it = inner(pair);

@@ -5,8 +5,8 @@
 use std::fmt::Write;
 
 use touchline_engine::scenario::{
-    Behaviour, Comparison, Condition, Distribution, EndCondition, EventAtom, EventKind, EventReward, EventStep, EventTeam,
-    Owner, PassKind, Region, Require, RewardKind, Sample, Spot, Stage, Target,
+    Behaviour, Comparison, Condition, Distribution, EndCondition, EventAtom, EventKind, EventReward, EventStep,
+    EventTeam, Owner, PassKind, Region, Require, RewardKind, Sample, Spot, Stage, Target,
 };
 use touchline_engine::{GameMode, PlayerEntry, Scenario, Side};
 

@@ -351,7 +351,10 @@ fn every_example_scenario_compiles_without_warnings_and_plays() {
                 team.iter().enumerate().filter(|(_, p)| !p.behaviour.is_empty()).map(move |(i, _)| (side, i))
             })
             .collect();
-        assert!(!behaving.is_empty(), "{}: uses behaviours", path.display());
+        if behaving.is_empty() {
+            // An example of another feature (event rewards, …): tests/examples.rs plays it.
+            continue;
+        }
         let mut env = env(s.clone(), 0);
         let start: Vec<_> = behaving.iter().map(|&(side, i)| env.game().team(side)[i].position).collect();
         let mut moved = false;

@@ -34,6 +34,9 @@ fn every_example_scenario_compiles_and_plays() {
     assert!(!files.is_empty(), "no examples/scenarios/*.tl");
     for path in files {
         let name = path.display().to_string();
+        let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let formatted = touchline_dsl::format_source(&text, &name).unwrap_or_else(|d| panic!("{name}:\n{d}"));
+        assert_eq!(formatted, text, "{name}: not in `touchline fmt` layout");
         let compiled = touchline_dsl::compile_file(&path).unwrap_or_else(|d| panic!("{name}:\n{}", d.render_plain()));
         assert!(compiled.warnings.items.is_empty(), "{name}:\n{}", compiled.warnings.render_plain());
         assert!(!compiled.scenario.description.is_empty(), "{name}: give the scenario a `///` doc line");

@@ -126,3 +126,40 @@ fn behaviours_do_not_allocate() {
     }
     assert_eq!(ALLOCATIONS.with(Cell::get), 0, "behaviours: step allocated");
 }
+
+#[test]
+fn event_rewards_do_not_allocate() {
+    use touchline_engine::scenario::{
+        EventAtom, EventKind, EventReward, EventStep, EventTeam, Region, RewardKind, RewardTerm,
+    };
+    let atom = |event| EventAtom { event, team: EventTeam::Own, by_player: false };
+    let term = |sequence, once| RewardTerm { reward: RewardKind::Event(EventReward { sequence, once }), weight: 0.1 };
+    let zone = Region::Rect { x: [0.7, 1.0], y: [-0.24, 0.24] };
+    let mut s = common::scenario("11_vs_11_easy_stochastic");
+    s.rewards = vec![
+        RewardTerm::scoring(),
+        term(vec![EventStep::One(atom(EventKind::PassCompleted)), EventStep::One(atom(EventKind::Shot))], false),
+        term(vec![EventStep::AnyOf(vec![atom(EventKind::HasBallIn(zone.clone())), atom(EventKind::GoalFor)])], true),
+        term(vec![EventStep::AllOf(vec![atom(EventKind::PossessionWon), atom(EventKind::BallEnters(zone))])], false),
+        term(vec![EventStep::One(EventAtom { team: EventTeam::Opponent, ..atom(EventKind::HasBall) })], false),
+    ];
+    let config = touchline_engine::EnvConfig {
+        action_set: touchline_engine::ActionSet::V2,
+        left_agents: 2,
+        right_agents: 1,
+        ..touchline_engine::EnvConfig::default()
+    };
+    let mut env = touchline_engine::Env::with_config(s, config, 1).unwrap();
+    let mut paid = 0.0;
+    for _ in 0..3000 {
+        COUNTING.with(|c| c.set(true));
+        let out = env.step(&[Action::BuiltinAi; 3]).unwrap();
+        COUNTING.with(|c| c.set(false));
+        paid += env.info().event_reward;
+        if out.terminated || out.truncated {
+            env.reset();
+        }
+    }
+    assert!(paid != 0.0, "no event reward paid: the test exercised nothing");
+    assert_eq!(ALLOCATIONS.with(Cell::get), 0, "a step with event rewards allocated");
+}

@@ -28,7 +28,7 @@ class FootballParallelEnv(ParallelEnv[str, np.ndarray, int]):  # type: ignore[mi
     together: `terminated` on the scenario's end conditions, `truncated` at the time limit, after
     which `agents` is empty. `infos[agent]` carries `score` ([left, right], in the left team's frame
     as in GRF's info), `steps_left`, `game_mode`, `score_reward` (left team's), `checkpoint_reward`,
-    `steps` and `episode`.
+    `event_reward` (the scenario's `reward on …` terms), `steps` and `episode`.
 
     Build it with `touchline.parallel_env(...)`; the arguments are those of `touchline.make`.
     """

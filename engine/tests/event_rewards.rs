@@ -136,6 +136,12 @@ fn new_events_happen_in_a_match_and_fold_into_the_statistics() {
     let mut seen = [0u32; 3];
     for _ in 0..3_000 {
         env.step(&[Action::BuiltinAi]).unwrap();
+        // The restart after a ball out of play goes to the other team.
+        for pair in env.game().events().windows(2) {
+            if let [Event::OutOfPlay { side, .. }, next] = pair {
+                assert!(matches!(next, Event::Restart { side: s, .. } if *s == side.opponent()), "{pair:?}");
+            }
+        }
         for e in env.game().events() {
             match e {
                 Event::PossessionWon { side, from, .. } => {

@@ -135,9 +135,7 @@ fn pay(c: &mut Criterion) {
     let mut g = c.benchmark_group("pay");
     g.throughput(Throughput::Elements(1));
     for (id, terms) in [("10_checkpoint_terms", checkpoints()), ("10_stream_terms", stream())] {
-        let mut s = Scenario::default();
-        s.rewards = terms;
-        let rewards = EventRewards::new(&s);
+        let rewards = EventRewards::new(&Scenario { rewards: terms, ..Scenario::default() });
         let mut progress = vec![EventProgress::default(); rewards.len()];
         g.bench_function(id, |b| {
             b.iter(|| {

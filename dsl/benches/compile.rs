@@ -50,6 +50,22 @@ fn compile_stdlib(c: &mut Criterion) {
     c.bench_function("compile/randomised_academy_with_require", |b| {
         b.iter(|| black_box(compile(RANDOMISED, "randomised.tl")))
     });
+    // Behaviours and conditions: the example scenarios that use them (examples/scenarios).
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenarios");
+    let mut examples: Vec<(String, String)> = std::fs::read_dir(&dir)
+        .expect("examples/scenarios")
+        .map(|e| e.expect("an entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "tl"))
+        .map(|p| (p.display().to_string(), std::fs::read_to_string(&p).expect("readable")))
+        .collect();
+    examples.sort();
+    c.bench_function(&format!("compile/{}_behaviour_examples", examples.len()), |b| {
+        b.iter(|| {
+            for (origin, text) in &examples {
+                black_box(compile(text, origin).expect("the examples compile"));
+            }
+        })
+    });
 }
 
 fn reset(c: &mut Criterion) {

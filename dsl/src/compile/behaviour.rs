@@ -8,6 +8,7 @@
 use touchline_engine::scenario::{Behaviour, PassKind, Stage, Target};
 use touchline_engine::{Scenario, Side};
 
+use super::check::RIM;
 use super::condition::{self, Context};
 use super::value::{Frame, Reader, suggest_help};
 use crate::diagnostic::{Code, Diagnostic};
@@ -18,10 +19,7 @@ use crate::syntax::{self, Action, Argument, Expr, ExprKind, Span};
 pub(crate) const BEHAVIOURS: [&str; 10] =
     ["idle", "hold_position", "follow", "move_to", "dribble_to", "pass_to", "mark", "press", "builtin", "script"];
 
-/// The farthest a behaviour's point may be (the rim a player may start on, grf.md §7.4).
-const RIM: [f32; 2] = [1.1, 0.48];
-
-/// Whether a point is finite and inside the rim.
+/// Whether a point is finite and inside the rim (where a player may start).
 pub(crate) fn on_rim(p: [f32; 2]) -> bool {
     p.iter().all(|v| v.is_finite()) && p[0].abs() <= RIM[0] && p[1].abs() <= RIM[1]
 }

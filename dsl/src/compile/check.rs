@@ -9,8 +9,9 @@ use super::value::short;
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Source};
 use crate::syntax::Span;
 
-/// The rim: the farthest a player or the ball may start (60 m × 40 m; grf.md §7.4).
-const RIM: [f32; 2] = [1.1, 0.48];
+/// The rim: the farthest a player or the ball may start, or a behaviour's point may be
+/// (60 m × 40 m; grf.md §7.4).
+pub(super) const RIM: [f32; 2] = [1.1, 0.48];
 /// The lines: |x| ≤ 1, |y| ≤ 0.42.
 const LINES: [f32; 2] = [1.0, 0.42];
 /// Placements drawn to estimate how often the `require` constraints hold.

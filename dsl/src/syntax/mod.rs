@@ -636,6 +636,27 @@ mod tests {
     }
 
     #[test]
+    fn then_shoot_belongs_to_the_dribble_and_other_thens_start_stages() {
+        let text = "scenario s { team right { CF at (0, 0) does do dribble_to((0.5, 0)) then shoot until steps > 5 m then shoot then press } }";
+        let file = parse_text(text).unwrap();
+        let [Item::Definition(d)] = file.items.as_slice() else { panic!() };
+        let StatementKind::Team(t) = &d.statements[0].kind else { panic!() };
+        let b = t.players[0].behaviour.as_ref().expect("a behaviour");
+        assert_eq!(b.stages.len(), 3);
+        let [first, second, third] = b.stages.as_slice() else { panic!() };
+        assert!(first.shoot.is_some());
+        assert!(matches!(&first.until, Some(Condition { kind: ConditionKind::Compare { .. }, .. })));
+        // `shoot` after an `until` is a stage of its own (the compiler reports it).
+        assert!(
+            matches!(&second.action, Action::Expr(Expr { kind: ExprKind::Path { head, .. }, .. }) if head.value == "shoot")
+        );
+        assert!(second.shoot.is_none() && second.until.is_none());
+        assert!(
+            matches!(&third.action, Action::Expr(Expr { kind: ExprKind::Path { head, .. }, .. }) if head.value == "press")
+        );
+    }
+
+    #[test]
     fn syntax_errors_point_at_the_token() {
         let e = parse_text("scenario s {\n  ball at (0.5, 0.0\n}").unwrap_err();
         assert_eq!(e.code, Code::Syntax);

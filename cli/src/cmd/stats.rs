@@ -3,72 +3,71 @@
 
 use std::io::{self, Write};
 
-use serde::Serialize;
+use serde::ser::{Serialize, SerializeMap, Serializer};
 use touchline_engine::{MatchStats, Side, TeamStats};
 
-/// One episode's statistics (or a mean of several), `[left, right]` per figure.
-#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+/// How one figure is read from a team's statistics (possession, a share of both teams' time, is
+/// the one figure that is not).
+type Count = fn(&TeamStats) -> u32;
+
+/// Every figure: JSON key, printed label and how to count it (`None`: possession %).
+const ROWS: [(&str, &str, Option<Count>); 18] = [
+    ("goals", "goals", Some(|t| t.goals)),
+    ("shots", "shots", Some(|t| t.shots)),
+    ("shots_on_target", "on target", Some(|t| t.shots_on_target)),
+    ("passes", "passes", Some(|t| t.passes)),
+    ("passes_completed", "completed", Some(|t| t.passes_completed)),
+    ("passes_intercepted", "intercepted", Some(|t| t.passes_intercepted)),
+    ("possession", "possession %", None),
+    ("possessions_won", "balls won", Some(|t| t.possessions_won)),
+    ("out_of_play", "out of play", Some(|t| t.out_of_play)),
+    ("fouls", "fouls", Some(|t| t.fouls)),
+    ("yellow_cards", "yellow cards", Some(|t| t.yellow_cards)),
+    ("red_cards", "red cards", Some(|t| t.red_cards)),
+    ("offsides", "offsides", Some(|t| t.offsides)),
+    ("corners", "corners", Some(|t| t.corners)),
+    ("throw_ins", "throw-ins", Some(|t| t.throw_ins)),
+    ("goal_kicks", "goal kicks", Some(|t| t.goal_kicks)),
+    ("free_kicks", "free kicks", Some(|t| t.free_kicks)),
+    ("penalties", "penalties", Some(|t| t.penalties)),
+];
+
+/// One episode's statistics (or a mean of several), `[left, right]` per figure of [`ROWS`].
+/// JSON: an object with one `[left, right]` array per key, in [`ROWS`] order.
+#[derive(Clone, Debug, Default, PartialEq)]
 pub(crate) struct StatsLine {
-    goals: [f64; 2],
-    shots: [f64; 2],
-    shots_on_target: [f64; 2],
-    passes: [f64; 2],
-    passes_completed: [f64; 2],
-    /// Percent of the time with the ball.
-    possession: [f64; 2],
-    fouls: [f64; 2],
-    yellow_cards: [f64; 2],
-    red_cards: [f64; 2],
-    offsides: [f64; 2],
-    corners: [f64; 2],
-    throw_ins: [f64; 2],
-    goal_kicks: [f64; 2],
-    free_kicks: [f64; 2],
-    penalties: [f64; 2],
+    values: [[f64; 2]; ROWS.len()],
 }
 
 impl From<&MatchStats> for StatsLine {
     fn from(s: &MatchStats) -> StatsLine {
-        let pair = |f: fn(&TeamStats) -> u32| [f64::from(f(&s.teams[0])), f64::from(f(&s.teams[1]))];
-        StatsLine {
-            goals: pair(|t| t.goals),
-            shots: pair(|t| t.shots),
-            shots_on_target: pair(|t| t.shots_on_target),
-            passes: pair(|t| t.passes),
-            passes_completed: pair(|t| t.passes_completed),
-            possession: [s.possession_percent(Side::Left), s.possession_percent(Side::Right)],
-            fouls: pair(|t| t.fouls),
-            yellow_cards: pair(|t| t.yellow_cards),
-            red_cards: pair(|t| t.red_cards),
-            offsides: pair(|t| t.offsides),
-            corners: pair(|t| t.corners),
-            throw_ins: pair(|t| t.throw_ins),
-            goal_kicks: pair(|t| t.goal_kicks),
-            free_kicks: pair(|t| t.free_kicks),
-            penalties: pair(|t| t.penalties),
+        let mut values = [[0.0; 2]; ROWS.len()];
+        for (v, (_, _, count)) in values.iter_mut().zip(ROWS) {
+            *v = match count {
+                Some(count) => [f64::from(count(&s.teams[0])), f64::from(count(&s.teams[1]))],
+                None => [s.possession_percent(Side::Left), s.possession_percent(Side::Right)],
+            };
         }
+        StatsLine { values }
+    }
+}
+
+impl Serialize for StatsLine {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(ROWS.len()))?;
+        for ((key, _, _), v) in ROWS.iter().zip(&self.values) {
+            map.serialize_entry(key, v)?;
+        }
+        map.end()
     }
 }
 
 impl StatsLine {
-    fn fields_mut(&mut self) -> [&mut [f64; 2]; 15] {
-        [
-            &mut self.goals,
-            &mut self.shots,
-            &mut self.shots_on_target,
-            &mut self.passes,
-            &mut self.passes_completed,
-            &mut self.possession,
-            &mut self.fouls,
-            &mut self.yellow_cards,
-            &mut self.red_cards,
-            &mut self.offsides,
-            &mut self.corners,
-            &mut self.throw_ins,
-            &mut self.goal_kicks,
-            &mut self.free_kicks,
-            &mut self.penalties,
-        ]
+    /// The figure stored under JSON key `key`.
+    #[cfg(test)]
+    fn get(&self, key: &str) -> [f64; 2] {
+        let i = ROWS.iter().position(|(k, _, _)| *k == key).expect("a known key");
+        self.values[i]
     }
 
     /// The mean of `lines`; `None` when there are none.
@@ -76,8 +75,7 @@ impl StatsLine {
         let mut sum = StatsLine::default();
         let mut n = 0usize;
         for line in lines {
-            let mut line = line.clone();
-            for (total, value) in sum.fields_mut().into_iter().zip(line.fields_mut()) {
+            for (total, value) in sum.values.iter_mut().zip(&line.values) {
                 total[0] += value[0];
                 total[1] += value[1];
             }
@@ -86,7 +84,7 @@ impl StatsLine {
         if n == 0 {
             return None;
         }
-        for field in sum.fields_mut() {
+        for field in &mut sum.values {
             field[0] /= n as f64;
             field[1] /= n as f64;
         }
@@ -95,25 +93,8 @@ impl StatsLine {
 
     /// Writes the block, each line starting with `indent`.
     pub(crate) fn write(&self, out: &mut impl Write, indent: &str) -> io::Result<()> {
-        let rows: [(&str, &[f64; 2]); 15] = [
-            ("goals", &self.goals),
-            ("shots", &self.shots),
-            ("on target", &self.shots_on_target),
-            ("passes", &self.passes),
-            ("completed", &self.passes_completed),
-            ("possession %", &self.possession),
-            ("fouls", &self.fouls),
-            ("yellow cards", &self.yellow_cards),
-            ("red cards", &self.red_cards),
-            ("offsides", &self.offsides),
-            ("corners", &self.corners),
-            ("throw-ins", &self.throw_ins),
-            ("goal kicks", &self.goal_kicks),
-            ("free kicks", &self.free_kicks),
-            ("penalties", &self.penalties),
-        ];
-        for (name, [l, r]) in rows {
-            writeln!(out, "{indent}  {name:<14}{:>7} / {}", number(*l), number(*r))?;
+        for ((_, label, _), [l, r]) in ROWS.iter().zip(&self.values) {
+            writeln!(out, "{indent}  {label:<14}{:>7} / {}", number(*l), number(*r))?;
         }
         Ok(())
     }
@@ -136,11 +117,14 @@ mod tests {
         s.teams[0].possession_ticks = 3;
         s.teams[1].possession_ticks = 1;
         let a = StatsLine::from(&s);
-        assert_eq!(a.possession, [75.0, 25.0]);
+        assert_eq!(a.get("possession"), [75.0, 25.0]);
         let b = StatsLine::default();
         let m = StatsLine::mean([a, b].iter()).unwrap();
-        assert_eq!(m.goals, [1.0, 0.0]);
-        assert_eq!(m.passes, [0.0, 5.0]);
+        assert_eq!(m.get("goals"), [1.0, 0.0]);
+        assert_eq!(m.get("passes"), [0.0, 5.0]);
+        let json = serde_json::to_value(&m).unwrap();
+        assert_eq!(json["passes"], serde_json::json!([0.0, 5.0]));
+        assert_eq!(json.as_object().unwrap().len(), ROWS.len());
         assert!(StatsLine::mean(std::iter::empty()).is_none());
         let mut text = Vec::new();
         m.write(&mut text, "").unwrap();

@@ -278,6 +278,16 @@ impl Hooks for WatchedHooks {
         self.inner.step(view, rewards)
     }
 
+    fn behaviour_action(
+        &mut self,
+        view: &HookView<'_>,
+        side: touchline_engine::Side,
+        player: usize,
+        path: &str,
+    ) -> Result<touchline_engine::Action, EngineError> {
+        self.inner.behaviour_action(view, side, player, path)
+    }
+
     fn log(&self) -> &[String] {
         self.inner.log()
     }

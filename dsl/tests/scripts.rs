@@ -289,3 +289,71 @@ fn from_text_compiles_without_files() {
     let scripts = Scripts::from_text("x.rhai", "fn end(s) { s.steps >= 3 }", None, ScriptOptions::default()).unwrap();
     assert!(!scripts.is_empty());
 }
+
+/// A scenario whose left forward is played by `examples/behaviours/run_and_shoot.rhai` (or
+/// `path` in `dir`), no agents, the right keeper lazy.
+fn scripted_forward(path: &str) -> Scenario {
+    use touchline_engine::scenario::{Behaviour, Stage};
+    use touchline_engine::{PlayerEntry, Role};
+    let mut forward = PlayerEntry::new(Role::CF, 0.1, 0.1);
+    forward.behaviour = vec![Stage { behaviour: Behaviour::Script { path: path.into() }, until: None }];
+    Scenario {
+        left_team: vec![PlayerEntry::new(Role::GK, -1.0, 0.0), forward],
+        right_team: vec![PlayerEntry { lazy: true, ..PlayerEntry::new(Role::GK, -1.0, 0.0) }],
+        ball_position: [0.3, -0.1],
+        game_duration: 300,
+        ..Scenario::default()
+    }
+}
+
+fn behaviours_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/behaviours")
+}
+
+/// The example behaviour script runs at the ball, carries it forward and shoots; the same seed
+/// plays the same game.
+#[test]
+fn a_behaviour_script_runs_at_the_ball_and_shoots() {
+    let config = EnvConfig { left_agents: 0, ..EnvConfig::default() };
+    let play = || {
+        let mut env = build_env(scripted_forward("run_and_shoot.rhai"), &behaviours_dir(), config, 3).unwrap();
+        let (mut shot, mut owned, mut hashes) = (false, false, Vec::new());
+        for _ in 0..200 {
+            let out = env.step(&[]).unwrap();
+            hashes.push(env.game().state_hash());
+            owned |= env.game().owner() == Some((touchline_engine::Side::Left, 1));
+            shot |= env.game().events().iter().any(|e| {
+                matches!(e, touchline_engine::Event::Shot { side: touchline_engine::Side::Left, player: 1, .. })
+            });
+            if shot || out.terminated || out.truncated {
+                break;
+            }
+        }
+        (owned, shot, hashes)
+    };
+    let (owned, shot, first) = play();
+    assert!(owned && shot, "owned the ball: {owned}, shot: {shot}");
+    assert_eq!(first, play().2);
+}
+
+/// Behaviour scripts are checked at load (`fn act(s, me)`, `tl::S003`), and a bad return value
+/// is a return-type diagnostic under the error policy: fails the step, or, with `warn`, the
+/// player idles and the error is counted.
+#[test]
+fn behaviour_script_errors_follow_the_policy() {
+    let config = EnvConfig { left_agents: 0, ..EnvConfig::default() };
+    let dir = folder("act", &[("one.rhai", "fn act(s) { \"shot\" }"), ("bad.rhai", "fn act(s, me) { \"jump\" }")]);
+    let e = script_error(build_env(scripted_forward("one.rhai"), &dir, config, 0).unwrap_err());
+    assert!(matches!(e, ScriptError::MissingHook { hook: "act", .. }), "{e:?}");
+    assert!(touchline_dsl::render_plain(&e).contains("fn act(s, me)"), "{e:?}");
+    let mut env = build_env(scripted_forward("bad.rhai"), &dir, config, 0).unwrap();
+    let err = env.step(&[]).unwrap_err().to_string();
+    assert!(err.contains("tl::S006") && err.contains("`jump`"), "{err}");
+    let warn = ScriptOptions { on_error: ErrorPolicy::Warn, ..ScriptOptions::default() };
+    let mut env = build_env_with(scripted_forward("bad.rhai"), &dir, config, 0, warn).unwrap();
+    for k in 1..=3 {
+        env.step(&[]).unwrap();
+        assert_eq!(env.info().script_errors, k);
+        assert!(env.hook_log().iter().any(|l| l.contains("jump")));
+    }
+}

@@ -4,7 +4,7 @@ use std::fmt;
 use std::sync::Arc;
 
 use rhai::{CallFnOptions, Dynamic, Engine, EvalAltResult, Map, Scope};
-use touchline_engine::{EngineError, HookOutcome, HookView, Hooks, Side};
+use touchline_engine::{Action, ActionSet, EngineError, HookOutcome, HookView, Hooks, Side};
 
 use super::api::{State, TeamState};
 use super::diag::{self, ScriptError};
@@ -24,6 +24,10 @@ pub struct ScriptHooks {
     /// The views one step earlier (`None` at reset).
     prev: [Option<Arc<TeamState>>; 2],
     log: Vec<String>,
+    /// Behaviour scripts ran for the step under way (their log lines stay for the step's log).
+    acted: bool,
+    /// Behaviour-script failures absorbed for the step under way (counted in its outcome).
+    act_errors: u32,
 }
 
 impl fmt::Debug for ScriptHooks {
@@ -52,6 +56,8 @@ impl ScriptHooks {
             now: [Arc::default(), Arc::default()],
             prev: [None, None],
             log: Vec::new(),
+            acted: false,
+            act_errors: 0,
         }
     }
 
@@ -64,10 +70,12 @@ impl ScriptHooks {
         copy
     }
 
-    /// The views this step needs: each side with agents, and the left side for end scripts.
+    /// The views this step needs: each side with agents, the left side for end scripts, both
+    /// for behaviour scripts (whose players may be on either side).
     fn sides(&self, view: &HookView<'_>) -> [bool; 2] {
         let ends = self.set.scripts.iter().any(|s| s.role == Role::End);
-        [view.left_controllers > 0 || ends, view.observations.len() > view.left_controllers]
+        let acts = self.set.scripts.iter().any(|s| s.role == Role::Behaviour);
+        [view.left_controllers > 0 || ends || acts, view.observations.len() > view.left_controllers || acts]
     }
 
     /// Moves the current views to `prev` (when `step`) and fills the new ones from `view`, reusing
@@ -90,6 +98,29 @@ impl ScriptHooks {
 
     fn state(&self, k: usize) -> State {
         State { now: Arc::clone(&self.now[k]), prev: self.prev[k].clone() }
+    }
+
+    /// Calls behaviour script `i`'s `act` for side `k`'s player `me` and reads its action.
+    fn act(&mut self, i: usize, k: usize, me: usize, step: u32) -> Result<Action, Box<ScriptError>> {
+        let state = self.state(k);
+        let options = CallFnOptions::new().eval_ast(false).rewind_scope(true);
+        let ast = &self.set.scripts[i].ast;
+        let value = self
+            .engine
+            .call_fn_with_options::<Dynamic>(options, &mut self.scopes[i], ast, "act", (state, me as rhai::INT))
+            .map_err(|e| Box::new(Self::runtime_error(&self.set.scripts[i], "act", step, &e)))?;
+        let set = ActionSet::Default.actions();
+        let action = if let Ok(index) = value.as_int() {
+            usize::try_from(index).ok().and_then(|i| set.get(i).copied())
+        } else if let Some(name) = value.read_lock::<rhai::ImmutableString>() {
+            set.iter().copied().find(|a| a.name() == name.as_str())
+        } else {
+            None
+        };
+        action.ok_or_else(|| {
+            let expected = "an action name (\"shot\", \"right\", \"sprint\", …) or an index 0–18 of the default set";
+            Box::new(Self::return_error(&self.set.scripts[i], "act", &value, expected))
+        })
     }
 
     /// Calls `hook` of script `i` with side `k`'s view.
@@ -168,6 +199,8 @@ impl ScriptHooks {
                 Ok(end) => Ok(Returned::End(end)),
                 Err(_) => Err(Box::new(Self::return_error(script, hook, &value, "a bool (true ends the episode)"))),
             },
+            // Behaviour scripts are not step hooks (`step` skips them); nothing to pay.
+            Role::Behaviour => Ok(Returned::Paid),
             Role::Reward { weight } => {
                 let (start, len) = if k == 0 {
                     (0, view.left_controllers)
@@ -223,6 +256,8 @@ fn number(d: &Dynamic) -> Option<f32> {
 impl Hooks for ScriptHooks {
     fn reset(&mut self, view: &HookView<'_>) -> Result<(), EngineError> {
         self.log.clear();
+        self.acted = false;
+        self.act_errors = 0;
         self.refresh(view, false);
         let mut errors = 0;
         for i in 0..self.set.scripts.len() {
@@ -241,11 +276,17 @@ impl Hooks for ScriptHooks {
     }
 
     fn step(&mut self, view: &HookView<'_>, rewards: &mut [f32]) -> Result<HookOutcome, EngineError> {
-        self.log.clear();
+        // Behaviour scripts ran before this step's ticks: their lines belong to this step.
+        if !std::mem::take(&mut self.acted) {
+            self.log.clear();
+        }
         self.refresh(view, true);
         let sides = self.sides(view);
-        let mut outcome = HookOutcome::default();
+        let mut outcome = HookOutcome { errors: std::mem::take(&mut self.act_errors), ..HookOutcome::default() };
         for i in 0..self.set.scripts.len() {
+            if self.set.scripts[i].role == Role::Behaviour {
+                continue;
+            }
             let reward = matches!(self.set.scripts[i].role, Role::Reward { .. });
             for (k, &needed) in sides.iter().enumerate() {
                 // Rewards go to each team with agents; end scripts look from the left.
@@ -265,6 +306,33 @@ impl Hooks for ScriptHooks {
         }
         self.drain_prints();
         Ok(outcome)
+    }
+
+    fn behaviour_action(
+        &mut self,
+        view: &HookView<'_>,
+        side: Side,
+        player: usize,
+        path: &str,
+    ) -> Result<Action, EngineError> {
+        if !std::mem::replace(&mut self.acted, true) {
+            self.log.clear();
+        }
+        let Some(i) = self.set.scripts.iter().position(|s| s.role == Role::Behaviour && s.path == path) else {
+            return Err(EngineError::Script { message: format!("no behaviour script \"{path}\" was compiled") });
+        };
+        let result = self.act(i, side.index(), player, view.steps);
+        self.drain_prints();
+        match result {
+            Ok(action) => Ok(action),
+            Err(error) => {
+                let mut errors = 0;
+                self.fail(&error, &mut errors)?;
+                self.act_errors += errors;
+                // Under the warn policy a failing script's player does nothing this step.
+                Ok(Action::Idle)
+            }
+        }
     }
 
     fn log(&self) -> &[String] {

@@ -11,7 +11,15 @@
 //!   multiplies it.
 //! - an **end script** defines `fn end(s)`, called after every step in the left team's frame; it
 //!   returns `true` to end (terminate) the episode.
-//! - either may define `fn reset(s)`, called at the start of each episode (e.g. to fill `memory`).
+//! - a **behaviour script** (`CM at (…) does script "run_and_shoot.rhai"`) defines `fn act(s, me)`,
+//!   called before every step for each player whose behaviour stage it is (and whom no agent
+//!   drives), in that player's team's frame; `me` is his index in his team (`s.left_team[me]` is
+//!   where he stands). It returns an action: its GRF name (`"shot"`, `"top_right"`, `"sprint"`,
+//!   …) or its index in the default 19-action set. The action is applied as an agent's, with a
+//!   sticky gamepad of the player's own; `builtin_ai` is not available (the player stands). One
+//!   `memory` per file, shared by every player running it (key it by `me`). A set piece the
+//!   player is to take is taken by the built-in AI.
+//! - any may define `fn reset(s)`, called at the start of each episode (e.g. to fill `memory`).
 //!
 //! `s` is the read-only state (the getters are in the table below: ball, players,
 //! score, game mode, steps left, the agents' players and actions, `s.prev` the previous step).
@@ -120,8 +128,12 @@ pub struct ScriptErrors {
 /// What a script is for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Role {
-    Reward { weight: f32 },
+    Reward {
+        weight: f32,
+    },
     End,
+    /// A player's behaviour (`does script "x.rhai"`): `fn act(s, me)` returns an action.
+    Behaviour,
 }
 
 impl Role {
@@ -129,6 +141,15 @@ impl Role {
         match self {
             Role::Reward { .. } => "reward",
             Role::End => "end",
+            Role::Behaviour => "act",
+        }
+    }
+
+    /// Parameters the hook takes: the state, and for `act` the player's index.
+    fn arity(self) -> usize {
+        match self {
+            Role::Behaviour => 2,
+            _ => 1,
         }
     }
 }
@@ -183,6 +204,12 @@ impl Scripts {
         for end in &scenario.end_when {
             if let EndCondition::Script { path } = end {
                 wanted.push((path.clone(), Role::End));
+            }
+        }
+        // One compiled script (and one `memory`) per behaviour file, however many players use it.
+        for path in scenario.script_behaviours() {
+            if !wanted.iter().any(|(p, role)| p == path && *role == Role::Behaviour) {
+                wanted.push((path.to_owned(), Role::Behaviour));
             }
         }
         let mut scripts = Vec::new();
@@ -304,9 +331,15 @@ fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -
     let arity =
         |name: &str| ast.iter_functions().filter(|f| f.name == name).map(|f| f.params.len()).collect::<Vec<_>>();
     let found = arity(hook);
-    if !found.contains(&1) {
+    if !found.contains(&role.arity()) {
         let help = match found.first() {
+            Some(n) if role == Role::Behaviour => format!(
+                "`act` takes {n} parameters; it must take two, the state and the player's index: `fn act(s, me) {{ … }}`"
+            ),
             Some(n) => format!("`{hook}` takes {n} parameters; it must take one, the state: `fn {hook}(s) {{ … }}`"),
+            None if role == Role::Behaviour => "a behaviour script defines `fn act(s, me)` returning an action \
+                                                 name (\"shot\", \"right\", …) or its index in the default set"
+                .to_owned(),
             None if matches!(role, Role::Reward { .. }) => {
                 "a reward script defines `fn reward(s)` returning a number, or an array with one number per agent"
                     .to_owned()

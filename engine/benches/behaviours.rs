@@ -5,7 +5,9 @@
 //! Both cases play 11_vs_11_easy_stochastic with the left team under the built-in AI
 //! (`builtin_ai`, v2 set); in `right_native_behaviours` every right player has a behaviour
 //! (keeper and four players `hold_position`, three `press`, three `mark` a left player), in
-//! `right_builtin_ai` none.
+//! `right_builtin_ai` none. The games differ (the behaviours play otherwise), so the bench also
+//! prints each case's mean over 30,000 steps with its in-play ticks and goals, to show that the
+//! comparison is between games of the same length.
 //!
 //! Run: `cargo bench -p touchline-engine --bench behaviours`
 
@@ -38,6 +40,21 @@ fn with_behaviours(mut s: Scenario) -> Scenario {
 fn steps(c: &mut Criterion) {
     let v2 = EnvConfig { action_set: ActionSet::V2, ..EnvConfig::default() };
     let base = scenario("11_vs_11_easy_stochastic");
+    // Whole episodes first: both play as many in-play ticks, so the per-step figures compare.
+    for (id, s) in [("right_builtin_ai", base.clone()), ("right_native_behaviours", with_behaviours(base.clone()))] {
+        let mut env = Env::with_config(s, v2, 0).expect("env");
+        let (mut ticks, mut goals, mut steps) = (0u64, 0u32, 0u32);
+        for _ in 0..30_000 {
+            let out = env.step(&[Action::BuiltinAi]).expect("step");
+            steps += 1;
+            if out.terminated || out.truncated {
+                ticks += env.game().in_play_ticks();
+                goals += env.game().score().iter().sum::<u32>();
+                env.reset();
+            }
+        }
+        println!("play/{id}: {steps} steps, {ticks} in-play ticks in finished episodes, {goals} goals");
+    }
     let mut group = c.benchmark_group("behaviours");
     group.throughput(Throughput::Elements(1));
     for (id, s) in [("right_builtin_ai", base.clone()), ("right_native_behaviours", with_behaviours(base))] {

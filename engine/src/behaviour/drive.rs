@@ -3,7 +3,7 @@
 
 use glam::Vec2;
 
-use super::ball_play::{dribble, pass, press};
+use super::ball_play::{Chase, dribble, pass, press};
 use super::condition::Scope;
 use super::movement::{ARRIVED, arrive, follow, hold, idle, mark};
 use super::state::PlayerBehaviour;
@@ -92,11 +92,16 @@ impl Match {
     /// After the AI: writes the inputs of the players the behaviours drive (a lazy one only
     /// stands: lazy wins) and notes the stages that finished.
     pub(crate) fn behaviour_inputs(&mut self) {
+        // The ball's predicted path, made once a tick by the first player who needs it.
+        let mut path = None;
         for g in 0..self.behaviours.len() {
             if !self.native[g] || self.agent_driven[g] || !self.players[g].active {
                 continue;
             }
-            let (input, finished) = self.native_input(g);
+            let mut meet = self.behaviours[g].meet;
+            let mut chase = Chase { path: &mut path, meet: &mut meet, tick: self.in_play_ticks };
+            let (input, finished) = self.native_input(g, &mut chase);
+            self.behaviours[g].meet = meet;
             if let Some(input) = input {
                 self.inputs[g] = input;
             }
@@ -109,7 +114,7 @@ impl Match {
 
     /// Player `g`'s input from his behaviour (`None`: keep the input set from outside, a
     /// script's) and whether the stage finished.
-    fn native_input(&self, g: usize) -> (Option<PlayerInput>, bool) {
+    fn native_input(&self, g: usize, chase: &mut Chase) -> (Option<PlayerInput>, bool) {
         let b = &self.behaviours[g];
         let p = &self.players[g];
         let ball = self.ball.xy();
@@ -133,17 +138,22 @@ impl Match {
             // Finished ball-playing stages hold the place where they finished.
             Behaviour::DribbleTo { .. } | Behaviour::PassTo { .. } if b.done => (hold(p, b.anchor, ball), false),
             Behaviour::DribbleTo { point, shoot } => {
-                dribble(p, owns, &self.ball, scope.point(point[0], point[1]), *shoot)
+                dribble(p, owns, &self.ball, chase, scope.point(point[0], point[1]), *shoot)
             }
             Behaviour::PassTo { player, kind } => match self.team(p.side).get(*player) {
-                Some(mate) => pass(p, owns, &self.ball, mate, *kind),
+                Some(mate) => pass(p, owns, &self.ball, chase, mate, *kind),
                 None => (idle(p, ball), false),
             },
             Behaviour::Mark(target) => match scope.player_of(*target).and_then(|(side, i)| self.team(side).get(i)) {
                 Some(man) => (mark(p, man, ball), false),
                 None => (idle(p, ball), false),
             },
-            Behaviour::Press => (press(p, self.owner.map(|o| &self.players[o]), &self.ball, b.anchor), false),
+            Behaviour::Press => {
+                let carrier = self.owner.map(|o| &self.players[o]);
+                let their_restart =
+                    self.mode != GameMode::Normal && self.taker.is_some_and(|t| self.players[t].side != p.side);
+                (press(p, carrier, &self.ball, chase, b.anchor, their_restart), false)
+            }
             // Not driven here: the AI plays `builtin`, the env sets a script's input each step.
             Behaviour::Builtin { .. } | Behaviour::Script { .. } => return (None, false),
         };

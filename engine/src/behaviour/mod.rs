@@ -22,6 +22,8 @@
 //! native speed, faster than the AI). After it, each native player's [`PlayerInput`] is computed
 //! from his behaviour ([`movement`]: idle, hold_position, follow, move_to, mark; [`ball_play`]:
 //! dribble_to, pass_to, press, reusing the AI's ball prediction, closing down and kick aiming).
+//! During a set piece the other behaviours go on as in play (nobody but the taker may touch the
+//! ball then), except that `press` stands 9.15 m off the ball at the other team's restart.
 //! A lazy player only stands (lazy wins); an agent-driven player follows the agent (the
 //! behaviour resumes when control leaves him). `builtin(θ)` hands the player to the team AI at
 //! his own θ: his skill-scaled attributes (top speed, acceleration, kick accuracy, tackling)

@@ -29,13 +29,22 @@ pub(crate) struct PlayerBehaviour {
     pub(crate) anchor: Vec2,
     /// A script-driven player's virtual gamepad (global frame), as an agent's.
     pub(crate) sticky: StickyState,
+    /// Where he last chose to meet a loose ball (m) and the in-play tick he chose it.
+    pub(crate) meet: Option<(Vec2, u64)>,
 }
 
 impl PlayerBehaviour {
     /// The program `stages` for a player starting at `at` (m).
     pub(crate) fn new(stages: &[Stage], at: Vec2) -> PlayerBehaviour {
         let stages = stages.iter().map(|s| StageState { behaviour: s.behaviour.clone(), until: s.until.clone() });
-        PlayerBehaviour { stages: stages.collect(), stage: 0, done: false, anchor: at, sticky: StickyState::default() }
+        PlayerBehaviour {
+            stages: stages.collect(),
+            stage: 0,
+            done: false,
+            anchor: at,
+            sticky: StickyState::default(),
+            meet: None,
+        }
     }
 
     /// The behaviour being played; `None` for a built-in-AI player.
@@ -69,6 +78,7 @@ impl PlayerBehaviour {
         self.done = false;
         self.anchor = at;
         self.sticky = StickyState::default();
+        self.meet = None;
         true
     }
 }

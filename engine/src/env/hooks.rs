@@ -4,6 +4,9 @@
 //! (`reward script "x.rhai"`, `end when script "y.rhai"`) and attaches them with
 //! [`Env::with_hooks`](super::Env::with_hooks).
 //!
+//! Behaviour scripts (`Behaviour::Script`) are asked first: before the step's ticks, once per
+//! scripted player ([`Hooks::behaviour_action`]).
+//!
 //! Order within a step: the match plays its ticks, controls and observations are refreshed, the
 //! built-in rewards (scoring, checkpoints) are computed, then [`Hooks::step`] runs and its rewards
 //! are added; the episode terminates when a built-in condition or a hook says so.

@@ -82,6 +82,19 @@ pub(crate) enum CliError {
         source: EngineError,
     },
 
+    /// `--curriculum` on a scenario without one.
+    #[error("`{scenario}` has no curriculum")]
+    #[diagnostic(
+        code(tl::cli::curriculum),
+        help(
+            "add `curriculum {{ lesson … advance when … }}` to the scenario (grammar/README.md, Curricula), or drop --curriculum"
+        )
+    )]
+    NoCurriculum {
+        /// The scenario as given on the command line.
+        scenario: String,
+    },
+
     /// The engine refused a step it should have accepted: a bug.
     #[error("the engine failed in episode {episode} after {steps} steps")]
     #[diagnostic(

@@ -145,3 +145,57 @@ fn scenarios_lists_the_stdlib() {
     let names: Vec<&str> = names.lines().collect();
     assert_eq!(names, touchline_dsl::stdlib::names());
 }
+
+#[test]
+fn run_curriculum_shows_the_lessons() {
+    // Every full window of 2 episodes meets `success_rate >= 0`: a new lesson every 2 episodes.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("lessons.tl");
+    std::fs::write(
+        &path,
+        "/// Two empty-goal lessons, then the run with a keeper.\nscenario lessons {\n  extends academy_empty_goal_close\n  \
+         curriculum {\n    lesson close\n    lesson far extends academy_empty_goal\n    \
+         lesson keeper extends academy_run_to_score_with_keeper\n    advance when success_rate >= 0 over 2 episodes\n  }\n}\n",
+    )
+    .unwrap();
+    let path = path.to_str().unwrap();
+    let output = touchline(&["run", path, "--curriculum", "--episodes", "5", "--policy", "builtin"]);
+    assert_eq!(output.status.code(), Some(0), "stderr: {}", stderr(&output));
+    let text = stdout(&output);
+    assert!(text.contains("lesson   1 `close` -> 2/3 `far` after 2 episodes"), "{text}");
+    assert!(text.contains("lesson   2 `far` -> 3/3 `keeper` after 2 episodes"), "{text}");
+    assert!(text.contains("lessons (3 in the curriculum):"), "{text}");
+    assert!(text.contains("advanced after episode 1"), "{text}");
+    assert!(text.contains("advanced after episode 3"), "{text}");
+
+    let output = touchline(&["run", path, "--curriculum", "--episodes", "5", "--policy", "idle", "--json"]);
+    assert_eq!(output.status.code(), Some(0), "stderr: {}", stderr(&output));
+    let report: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    let lessons: Vec<u64> =
+        report["episodes"].as_array().unwrap().iter().map(|e| e["lesson"].as_u64().unwrap()).collect();
+    assert_eq!(lessons, [0, 0, 1, 1, 2]);
+    let rows = report["curriculum"]["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    assert_eq!(rows[0]["name"].as_str(), Some("close"));
+    assert_eq!(rows[0]["episodes"].as_u64(), Some(2));
+    assert_eq!(rows[0]["success_rate"].as_f64(), Some(0.0), "idling never scores");
+    assert_eq!(rows[2]["advanced_after"], serde_json::Value::Null);
+}
+
+#[test]
+fn run_curriculum_on_the_example_and_without_a_curriculum() {
+    let output = touchline(&[
+        "run",
+        "../examples/scenarios/run_to_score_curriculum.tl",
+        "--curriculum",
+        "--episodes",
+        "3",
+        "--policy",
+        "builtin",
+    ]);
+    assert_eq!(output.status.code(), Some(0), "stderr: {}", stderr(&output));
+    assert!(stdout(&output).contains("1/3 close"), "{}", stdout(&output));
+    let output = touchline(&["run", "academy_empty_goal_close", "--curriculum"]);
+    assert_eq!(output.status.code(), Some(2), "stderr: {}", stderr(&output));
+    assert!(stderr(&output).contains("has no curriculum"), "{}", stderr(&output));
+}

@@ -87,6 +87,27 @@ pub enum Code {
     EventRepeat,
     /// `any of ()` / `all of ()` with no event.
     EmptyEventGroup,
+    /// A name read as a parameter that no `param` declares (or a lesson or assignment giving a
+    /// value to one).
+    UnknownParam,
+    /// A parameter declared twice in one definition.
+    ParamRedefined,
+    /// A parameter's value that does not fit where it is used (unit, type, range), or one defined
+    /// in terms of itself.
+    ParamValue,
+    /// A lesson extends a scenario that does not exist.
+    UnknownLesson,
+    /// A curriculum that is not well formed: no lessons, two criteria, a curriculum in a lesson
+    /// or a preset.
+    CurriculumShape,
+    /// A curriculum that cannot advance: a criterion that can never be met, or a lesson before the
+    /// last without any criterion.
+    NeverAdvances,
+    /// An `advance when` metric that is not known.
+    UnknownMetric,
+    /// Lessons that an env cannot switch between: different numbers of controllable players or
+    /// different scripts.
+    LessonMismatch,
     /// Warning: a player or ball outside the lines (but inside the rim, so still playable).
     OutsideLines,
     /// Warning: the left team has no controllable player, so an agent has no one to drive.
@@ -102,7 +123,7 @@ pub enum Code {
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 40] = [
+    pub const ALL: [Code; 48] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -138,6 +159,14 @@ impl Code {
         Code::EventScope,
         Code::EventRepeat,
         Code::EmptyEventGroup,
+        Code::UnknownParam,
+        Code::ParamRedefined,
+        Code::ParamValue,
+        Code::UnknownLesson,
+        Code::CurriculumShape,
+        Code::NeverAdvances,
+        Code::UnknownMetric,
+        Code::LessonMismatch,
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
@@ -183,6 +212,14 @@ impl Code {
             Code::EventScope => "tl::E132",
             Code::EventRepeat => "tl::E133",
             Code::EmptyEventGroup => "tl::E134",
+            Code::UnknownParam => "tl::E140",
+            Code::ParamRedefined => "tl::E141",
+            Code::ParamValue => "tl::E142",
+            Code::UnknownLesson => "tl::E143",
+            Code::CurriculumShape => "tl::E144",
+            Code::NeverAdvances => "tl::E145",
+            Code::UnknownMetric => "tl::E146",
+            Code::LessonMismatch => "tl::E147",
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",
@@ -310,6 +347,25 @@ impl Diagnostics {
     /// Adds one.
     pub fn push(&mut self, d: Diagnostic) {
         self.items.push(d);
+    }
+
+    /// Drops repeats (same code, message, file and labels), keeping the first: a parent
+    /// resolved for several children reports each of its mistakes once.
+    pub fn dedup(&mut self) {
+        let mut seen: Vec<(Code, String, String, Vec<(usize, usize)>)> = Vec::new();
+        self.items.retain(|d| {
+            let key = (
+                d.code,
+                d.message.clone(),
+                d.source.name().to_owned(),
+                d.labels.iter().map(|(s, _)| (s.start, s.end)).collect(),
+            );
+            if seen.contains(&key) {
+                return false;
+            }
+            seen.push(key);
+            true
+        });
     }
 
     /// Whether any is an error.

@@ -126,7 +126,68 @@ impl Formatter<'_> {
         self.trailing(d.span.end);
     }
 
+    /// Writes `curriculum { … }` at `indent`: one lesson or `advance when` a line, a lesson's
+    /// statements one a line inside its braces.
+    fn curriculum(&mut self, c: &syntax::Curriculum, span: Span, indent: usize) {
+        self.leading(span.start, indent);
+        let _ = write!(self.out, "{:indent$}curriculum {{", "");
+        let mut items: Vec<(Span, Option<&syntax::Lesson>, Option<&syntax::Advance>)> = c
+            .lessons
+            .iter()
+            .map(|l| (l.span, Some(l), None))
+            .chain(c.advance.iter().map(|a| (a.span, None, Some(a))))
+            .collect();
+        items.sort_by_key(|(s, _, _)| s.start);
+        self.trailing_before(span.start + "curriculum".len(), items.first().map_or(span.end, |i| i.0.start));
+        let inner = indent + 2;
+        for (item_span, lesson, advance) in items {
+            if let Some(a) = advance {
+                self.leading(item_span.end, inner);
+                let _ = write!(self.out, "{:inner$}{}", "", advance_text(a));
+                self.trailing(item_span.end);
+                continue;
+            }
+            let Some(l) = lesson else { continue };
+            self.leading(l.name.span.start, inner);
+            let _ = write!(self.out, "{:inner$}lesson {}", "", l.name.value);
+            if let Some(p) = &l.parent {
+                let _ = write!(self.out, " extends {}", p.value);
+            }
+            if l.statements.is_empty() && !self.has_comment_before(item_span.end) {
+                self.trailing(item_span.end);
+                continue;
+            }
+            self.out.push_str(" {");
+            let header_end = l.parent.as_ref().map_or(l.name.span.end, |p| p.span.end);
+            self.trailing_before(header_end, l.statements.first().map_or(item_span.end, |s| s.span.start));
+            for st in &l.statements {
+                self.statement_at(&st.kind, st.span, inner + 2);
+            }
+            self.leading(item_span.end, inner + 2);
+            let _ = write!(self.out, "{:inner$}}}", "");
+            self.trailing(item_span.end);
+        }
+        self.leading(span.end, inner);
+        let _ = write!(self.out, "{:indent$}}}", "");
+        self.trailing(span.end);
+    }
+
     fn statement(&mut self, kind: &StatementKind, span: Span) {
+        self.statement_at(kind, span, 2);
+    }
+
+    fn statement_at(&mut self, kind: &StatementKind, span: Span, indent: usize) {
+        if let StatementKind::Curriculum(c) = kind {
+            self.curriculum(c, span, indent);
+            return;
+        }
+        if indent != 2 {
+            // Inside a lesson: one line per statement (a team block on one line too).
+            self.leading(span.end, indent);
+            let _ = write!(self.out, "{:indent$}{}", "", statement_line(kind));
+            self.trailing(span.end);
+            return;
+        }
         if let StatementKind::Team(t) = kind
             && t.block
         {
@@ -147,11 +208,7 @@ impl Formatter<'_> {
                 self.leading(p.span.end, 4);
                 let _ = write!(self.out, "    {} {}", p.role.value, place(&p.place));
                 for flag in &p.flags {
-                    self.out.push_str(match flag.value {
-                        Flag::Lazy => " lazy",
-                        Flag::Controllable => " controllable",
-                        Flag::NotControllable => " not controllable",
-                    });
+                    self.out.push_str(flag_text(flag.value));
                 }
                 if let Some(b) = &p.behaviour {
                     let _ = write!(self.out, " {}", behaviour(b));
@@ -164,52 +221,96 @@ impl Formatter<'_> {
             return;
         }
         self.leading(span.end, 2);
-        let line = match kind {
-            StatementKind::Extends(n) => format!("extends {}", n.value),
-            StatementKind::Ball(p) => format!("ball {}", place(p)),
-            StatementKind::OddBall(p) => format!("on odd episodes ball {}", place(p)),
-            StatementKind::SwapTeams => "on odd episodes swap teams".to_owned(),
-            StatementKind::Team(t) => {
-                let mut s = format!("team {}", side(t.side.value));
-                if let Some(fm) = &t.formation {
-                    let _ = write!(s, " formation \"{}\"", fm.value);
-                }
-                s
-            }
-            StatementKind::Require { lhs, at_least, rhs } => {
-                format!("require {} {} {}", expr(lhs), if *at_least { ">=" } else { "<=" }, expr(rhs))
-            }
-            StatementKind::Reward { terms, weight } => {
-                let terms: Vec<String> = terms
-                    .iter()
-                    .map(|t| match t {
-                        RewardTerm::Script(p) => format!("script \"{}\"", p.value),
-                        RewardTerm::Expr(e) => expr(e),
-                    })
-                    .collect();
-                let mut s = format!("reward {}", terms.join(" + "));
-                if let Some(w) = weight {
-                    let _ = write!(s, " weight {}", expr(w));
-                }
-                s
-            }
-            StatementKind::RewardOn(ro) => reward_on(ro),
-            StatementKind::End(conditions) => {
-                let c: Vec<String> = conditions.iter().map(condition).collect();
-                format!("end when {}", c.join(" or "))
-            }
-            StatementKind::Behaviour { player, behaviour: b } => {
-                format!("behaviour {} {}", expr(player), behaviour(b))
-            }
-            StatementKind::StartFrom(p) => format!("start from \"{}\"", p.value),
-            StatementKind::Setting { key, value } => format!("{} {}", key.value, expr(value)),
-        };
+        let line = statement_line(kind);
         let _ = write!(self.out, "  {line}");
         self.trailing(span.end);
     }
 
     fn has_comment_before(&self, end: usize) -> bool {
         self.comments.get(self.next).is_some_and(|c| c.span.start < end)
+    }
+}
+
+/// A statement on one line (a team's players, if any, inline in braces).
+fn statement_line(kind: &StatementKind) -> String {
+    match kind {
+        StatementKind::Extends(n) => format!("extends {}", n.value),
+        StatementKind::Ball(p) => format!("ball {}", place(p)),
+        StatementKind::OddBall(p) => format!("on odd episodes ball {}", place(p)),
+        StatementKind::SwapTeams => "on odd episodes swap teams".to_owned(),
+        StatementKind::Team(t) => {
+            let mut s = format!("team {}", side(t.side.value));
+            if let Some(fm) = &t.formation {
+                let _ = write!(s, " formation \"{}\"", fm.value);
+            }
+            if t.block {
+                s.push_str(" {");
+                for p in &t.players {
+                    let _ = write!(s, " {} {}", p.role.value, place(&p.place));
+                    for flag in &p.flags {
+                        s.push_str(flag_text(flag.value));
+                    }
+                    if let Some(b) = &p.behaviour {
+                        let _ = write!(s, " {}", behaviour(b));
+                    }
+                }
+                s.push_str(" }");
+            }
+            s
+        }
+        StatementKind::Require { lhs, at_least, rhs } => {
+            format!("require {} {} {}", expr(lhs), if *at_least { ">=" } else { "<=" }, expr(rhs))
+        }
+        StatementKind::Reward { terms, weight } => {
+            let terms: Vec<String> = terms
+                .iter()
+                .map(|t| match t {
+                    RewardTerm::Script(p) => format!("script \"{}\"", p.value),
+                    RewardTerm::Expr(e) => expr(e),
+                })
+                .collect();
+            let mut s = format!("reward {}", terms.join(" + "));
+            if let Some(w) = weight {
+                let _ = write!(s, " weight {}", expr(w));
+            }
+            s
+        }
+        StatementKind::RewardOn(ro) => reward_on(ro),
+        StatementKind::End(conditions) => {
+            let c: Vec<String> = conditions.iter().map(condition).collect();
+            format!("end when {}", c.join(" or "))
+        }
+        StatementKind::Behaviour { player, behaviour: b } => {
+            format!("behaviour {} {}", expr(player), behaviour(b))
+        }
+        StatementKind::StartFrom(p) => format!("start from \"{}\"", p.value),
+        StatementKind::Setting { key, value } => format!("{} {}", key.value, expr(value)),
+        StatementKind::Param { name, value } => format!("param {} = {}", name.value, expr(value)),
+        StatementKind::Assign { name, value } => format!("{} = {}", name.value, expr(value)),
+        StatementKind::Advance(a) => advance_text(a),
+        // Written by `Formatter::curriculum`; a curriculum inside a lesson (an error) on one line.
+        StatementKind::Curriculum(_) => "curriculum {}".to_owned(),
+    }
+}
+
+fn advance_text(a: &syntax::Advance) -> String {
+    let thresholds: Vec<String> = a
+        .thresholds
+        .iter()
+        .map(|t| format!("{} {} {}", t.metric.value, if t.at_least { ">=" } else { "<=" }, expr(&t.value)))
+        .collect();
+    let mut s = format!("advance when {} over {}", thresholds.join(" and "), expr(&a.window));
+    if let Some(m) = &a.min {
+        let _ = write!(s, " min {}", expr(m));
+    }
+    s
+}
+
+fn flag_text(f: Flag) -> &'static str {
+    match f {
+        Flag::Lazy => " lazy",
+        Flag::Controllable => " controllable",
+        Flag::NotControllable => " not controllable",
     }
 }
 
@@ -309,6 +410,11 @@ fn arguments(args: &[Argument]) -> String {
         .join(", ")
 }
 
+/// An expression as the formatter writes it (for messages that quote a value).
+pub(crate) fn expr_text(e: &Expr) -> String {
+    expr(e)
+}
+
 fn expr(e: &Expr) -> String {
     match &e.kind {
         ExprKind::Call { name, args } => format!("{}({})", name.value, arguments(args)),
@@ -319,6 +425,9 @@ fn expr(e: &Expr) -> String {
         ExprKind::Str(s) => format!("\"{s}\""),
         ExprKind::Path { head, field: Some(f) } => format!("{}.{}", head.value, f.value),
         ExprKind::Path { head, field: None } => head.value.clone(),
+        ExprKind::Binary { op, lhs, rhs } => format!("{} {} {}", expr(lhs), op.symbol(), expr(rhs)),
+        ExprKind::Negation(inner) => format!("-{}", expr(inner)),
+        ExprKind::Paren(inner) => format!("({})", expr(inner)),
     }
 }
 

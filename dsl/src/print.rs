@@ -5,8 +5,8 @@
 use std::fmt::Write;
 
 use touchline_engine::scenario::{
-    Behaviour, Comparison, Condition, Distribution, EndCondition, EventAtom, EventKind, EventReward, EventStep,
-    EventTeam, Owner, PassKind, Region, Require, RewardKind, Sample, Spot, Stage, Target,
+    Behaviour, Comparison, Condition, Criterion, Distribution, EndCondition, EventAtom, EventKind, EventReward,
+    EventStep, EventTeam, Owner, PassKind, Region, Require, RewardKind, Sample, Spot, Stage, Target,
 };
 use touchline_engine::{GameMode, PlayerEntry, Scenario, Side};
 
@@ -39,8 +39,30 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
     } else {
         d
     };
+    statements(&mut out, s, &base, 2, true);
+    if let Some(c) = &s.curriculum {
+        let plain = Scenario { curriculum: None, ..s.clone() };
+        out.push_str("  curriculum {\n");
+        for l in &c.lessons {
+            let _ = writeln!(out, "    lesson {} {{", l.name);
+            statements(&mut out, &l.scenario, &plain, 6, false);
+            if let Some(a) = &l.advance {
+                let _ = writeln!(out, "      {}", advance(a));
+            }
+            out.push_str("    }\n");
+        }
+        out.push_str("  }\n");
+    }
+    out.push_str("}\n");
+    out
+}
+
+/// The statements that turn `base` into `s`, at `indent` spaces; `top` writes both teams even
+/// when they match `base` (a scenario's own body).
+fn statements(out: &mut String, s: &Scenario, base: &Scenario, indent: usize, top: bool) {
+    let pad = " ".repeat(indent);
     if s.game_duration != base.game_duration {
-        let _ = writeln!(out, "  game_duration {}", s.game_duration);
+        let _ = writeln!(out, "{pad}game_duration {}", s.game_duration);
     }
     for (key, value, default) in [
         ("deterministic", s.deterministic, base.deterministic),
@@ -48,7 +70,7 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
         ("control_all_players", s.control_all_players, base.control_all_players),
     ] {
         if value != default {
-            let _ = writeln!(out, "  {key} {value}");
+            let _ = writeln!(out, "{pad}{key} {value}");
         }
     }
     for (key, value, default) in [
@@ -56,18 +78,18 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
         ("right_team_difficulty", s.right_team_difficulty, base.right_team_difficulty),
     ] {
         if value != default {
-            let _ = writeln!(out, "  {key} {}", number(value));
+            let _ = writeln!(out, "{pad}{key} {}", number(value));
         }
     }
     if s.game_engine_random_seed != base.game_engine_random_seed {
-        let _ = writeln!(out, "  game_engine_random_seed {}", s.game_engine_random_seed);
+        let _ = writeln!(out, "{pad}game_engine_random_seed {}", s.game_engine_random_seed);
     }
     if s.second_half != base.second_half {
-        let _ = writeln!(out, "  second_half {}", s.second_half);
+        let _ = writeln!(out, "{pad}second_half {}", s.second_half);
     }
     let ends_differ = (s.end_episode_on_score, s.end_episode_on_out_of_play, s.end_episode_on_possession_change)
         != (base.end_episode_on_score, base.end_episode_on_out_of_play, base.end_episode_on_possession_change)
-        || !s.end_when.is_empty();
+        || s.end_when != base.end_when;
     if ends_differ {
         let mut conditions: Vec<String> = [
             (s.end_episode_on_score, "score"),
@@ -86,40 +108,47 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
         }));
         if conditions.is_empty() {
             // No condition at all: only the time limit ends the episode.
-            let _ = writeln!(out, "  end_episode_on_score false");
-            let _ = writeln!(out, "  end_episode_on_out_of_play false");
-            let _ = writeln!(out, "  end_episode_on_possession_change false");
+            let _ = writeln!(out, "{pad}end_episode_on_score false");
+            let _ = writeln!(out, "{pad}end_episode_on_out_of_play false");
+            let _ = writeln!(out, "{pad}end_episode_on_possession_change false");
         } else {
-            let _ = writeln!(out, "  end when {}", conditions.join(" or "));
+            let _ = writeln!(out, "{pad}end when {}", conditions.join(" or "));
         }
     }
-    if s.swap_teams_on_odd_episodes {
-        out.push_str("  on odd episodes swap teams\n");
+    if s.swap_teams_on_odd_episodes && !base.swap_teams_on_odd_episodes {
+        let _ = writeln!(out, "{pad}on odd episodes swap teams");
+    } else if !s.swap_teams_on_odd_episodes && base.swap_teams_on_odd_episodes {
+        let _ = writeln!(out, "{pad}swap_teams_on_odd_episodes false");
     }
-    if s.ball_position != [0.0, 0.0] || s.ball_random.is_some() {
-        let _ = writeln!(out, "  ball {}", place(s.ball_position, s.ball_random.as_ref()));
+    if (s.ball_position, &s.ball_random) != (base.ball_position, &base.ball_random) {
+        let _ = writeln!(out, "{pad}ball {}", place(s.ball_position, s.ball_random.as_ref()));
     }
-    if let Some([x, y]) = s.odd_episode_ball_position {
-        let _ = writeln!(out, "  on odd episodes ball at ({}, {})", number(x), number(y));
+    if let Some([x, y]) =
+        s.odd_episode_ball_position.filter(|_| s.odd_episode_ball_position != base.odd_episode_ball_position)
+    {
+        let _ = writeln!(out, "{pad}on odd episodes ball at ({}, {})", number(x), number(y));
     }
-    for (side, team) in [("left", &s.left_team), ("right", &s.right_team)] {
-        let _ = writeln!(out, "  team {side} {{");
+    for (side, team, before) in [("left", &s.left_team, &base.left_team), ("right", &s.right_team, &base.right_team)] {
+        if !top && team == before {
+            continue;
+        }
+        let _ = writeln!(out, "{pad}team {side} {{");
         let side = if side == "left" { Side::Left } else { Side::Right };
         for p in team {
-            let _ = writeln!(out, "    {}", player(p, side));
+            let _ = writeln!(out, "{pad}  {}", player(p, side));
         }
-        out.push_str("  }\n");
+        let _ = writeln!(out, "{pad}}}");
     }
-    for r in &s.requires {
+    for r in s.requires.iter().filter(|_| s.requires != base.requires) {
         let (a, b, metres, op) = match r {
             Require::MinDistance { a, b, metres } => (a, b, metres, ">="),
             Require::MaxDistance { a, b, metres } => (a, b, metres, "<="),
         };
-        let _ = writeln!(out, "  require distance({}, {}) {op} {} m", body(*a), body(*b), number(*metres));
+        let _ = writeln!(out, "{pad}require distance({}, {}) {op} {} m", body(*a), body(*b), number(*metres));
     }
-    for t in &s.rewards {
+    for t in s.rewards.iter().filter(|_| s.rewards != base.rewards) {
         if let RewardKind::Event(reward) = &t.reward {
-            let _ = writeln!(out, "  {}", event_reward(reward, t.weight));
+            let _ = writeln!(out, "{pad}{}", event_reward(reward, t.weight));
             continue;
         }
         let term = match &t.reward {
@@ -131,13 +160,25 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
             RewardKind::Event(_) => unreachable!("printed above"),
         };
         if t.weight == 1.0 {
-            let _ = writeln!(out, "  reward {term}");
+            let _ = writeln!(out, "{pad}reward {term}");
         } else {
-            let _ = writeln!(out, "  reward {term} weight {}", number(t.weight));
+            let _ = writeln!(out, "{pad}reward {term} weight {}", number(t.weight));
         }
     }
-    out.push_str("}\n");
-    out
+}
+
+/// `advance when …` of a lesson's criterion.
+fn advance(c: &Criterion) -> String {
+    let thresholds: Vec<String> = c
+        .thresholds
+        .iter()
+        .map(|t| format!("{} {} {}", t.metric.name(), if t.at_least { ">=" } else { "<=" }, t.value))
+        .collect();
+    let mut line = format!("advance when {} over {} episodes", thresholds.join(" and "), c.window);
+    if c.min_episodes != c.window {
+        let _ = write!(line, " min {} episodes", c.min_episodes);
+    }
+    line
 }
 
 fn player(p: &PlayerEntry, side: Side) -> String {

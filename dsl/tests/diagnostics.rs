@@ -163,6 +163,16 @@ fixtures! {
     event_scope
     event_repeat
     empty_event_group
+    param_unknown
+    param_redefined
+    param_wrong_unit
+    lesson_unknown_param
+    lesson_unknown_scenario
+    curriculum_no_lessons
+    curriculum_never_met
+    lesson_without_criterion
+    curriculum_unknown_metric
+    lessons_mismatch
 }
 
 #[test]

@@ -46,7 +46,7 @@ pub mod rules;
 pub mod scenario;
 pub mod stats;
 
-pub use env::{Env, EnvConfig, HookOutcome, HookView, Hooks, Snapshot, StepInfo, StepOutcome};
+pub use env::{CurriculumProgress, Env, EnvConfig, HookOutcome, HookView, Hooks, Snapshot, StepInfo, StepOutcome};
 pub use error::EngineError;
 pub use game::{Action, ActionSet, GameMode, Match};
 pub use geometry::Side;

@@ -163,3 +163,23 @@ fn event_rewards_do_not_allocate() {
     assert!(paid != 0.0, "no event reward paid: the test exercised nothing");
     assert_eq!(ALLOCATIONS.with(Cell::get), 0, "a step with event rewards allocated");
 }
+
+#[test]
+fn step_does_not_allocate_in_a_curriculum() {
+    // Lessons change every 2 episodes: recording results and the lesson's bookkeeping stay
+    // allocation-free (the window is allocated when the env is built).
+    let mut env = touchline_engine::Env::new(common::curriculum(2, 0.0), 1).unwrap();
+    let mut policy = common::RandomPolicy::new(5);
+    let mut actions = [Action::Idle; 1];
+    for _ in 0..3000 {
+        actions[0] = policy.action(env.action_set());
+        COUNTING.with(|c| c.set(true));
+        let out = env.step(&actions).unwrap();
+        COUNTING.with(|c| c.set(false));
+        if out.terminated || out.truncated {
+            env.reset();
+        }
+    }
+    assert_eq!(env.lesson().map(|l| l.0), Some(2), "the env went through the lessons");
+    assert_eq!(ALLOCATIONS.with(Cell::get), 0, "step allocated");
+}

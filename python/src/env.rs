@@ -59,6 +59,7 @@ pub(crate) fn info_dict<'py>(py: Python<'py>, info: &StepInfo) -> PyResult<Bound
     d.set_item("script_errors", info.script_errors)?;
     d.set_item("steps", info.steps)?;
     d.set_item("episode", info.episode)?;
+    d.set_item("lesson", info.lesson)?;
     Ok(d)
 }
 
@@ -148,6 +149,12 @@ impl PyEnv {
         self.core.env.scenario().name.clone()
     }
 
+    /// The curriculum lesson played, `(index, name)`; `None` without a curriculum.
+    #[getter]
+    fn lesson(&self) -> Option<(usize, String)> {
+        self.core.env.lesson().map(|(i, name)| (i, name.to_owned()))
+    }
+
     #[getter]
     fn game_duration(&self) -> u32 {
         self.core.env.scenario().game_duration
@@ -171,6 +178,9 @@ impl PyEnv {
             let obs = self.observation(py, false)?;
             let rewards = PyArray1::from_slice(py, self.core.env.rewards());
             let info = info_dict(py, self.core.env.info())?;
+            if let Some((_, name)) = self.core.env.lesson() {
+                info.set_item("lesson_name", name)?;
+            }
             let log = self.core.env.hook_log();
             if !log.is_empty() {
                 info.set_item("script_log", log.to_vec())?;

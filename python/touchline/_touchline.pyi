@@ -83,6 +83,9 @@ class Env:
     @property
     def scenario_name(self) -> str: ...
     @property
+    def lesson(self) -> tuple[int, str] | None:
+        """The curriculum lesson played, (0-based index, name); None without a curriculum."""
+    @property
     def game_duration(self) -> int: ...
     def reset(self, seed: int | None = None) -> Any:
         """Starts an episode; returns the observation (array (M, *shape) or, for raw, a list of dicts)."""
@@ -93,7 +96,8 @@ class Env:
             (observation, rewards (M,) float32, terminated, truncated, info) where info has
             score [left, right], steps_left, game_mode, score_reward, checkpoint_reward, event_reward
             (the scenario's `reward on …` terms, summed over controllers), script_reward,
-            script_errors, steps, episode, and script_log (lines scripts printed) when not empty.
+            script_errors, steps, episode, lesson (0-based curriculum lesson, 0 without one),
+            lesson_name (with a curriculum), and script_log (lines scripts printed) when not empty.
 
         Raises:
             ValueError: wrong number of actions or an index outside the action set.

@@ -14,13 +14,19 @@ from ._touchline import Env as _CoreEnv
 
 
 def reset_info(core: _CoreEnv) -> dict[str, Any]:
-    """The info of a reset: `score`, `steps_left` and `game_mode`, as in the info of a step."""
+    """The info of a reset: `score`, `steps_left`, `game_mode` and `lesson` (with a curriculum also
+    `lesson_name`), as in the info of a step."""
     raw = core.raw_observations()[0]
-    return {
+    info: dict[str, Any] = {
         "score": [int(goals) for goals in raw["score"]],
         "steps_left": int(raw["steps_left"]),
         "game_mode": int(raw["game_mode"]),
+        "lesson": 0,
     }
+    lesson = core.lesson
+    if lesson is not None:
+        info["lesson"], info["lesson_name"] = lesson
+    return info
 
 
 class FootballEnv(gymnasium.Env[np.ndarray, Any]):

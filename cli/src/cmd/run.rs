@@ -15,6 +15,7 @@ use serde::Serialize;
 use touchline_engine::{Action, ActionSet, EnvConfig, Scenario};
 use touchline_render::replay::{Recorder, Replay};
 
+use super::lessons::LessonLog;
 use super::stats::StatsLine;
 
 use crate::CliError;
@@ -73,6 +74,12 @@ pub(crate) struct RunArgs {
     /// GRF's score dumps), `…_goal<STEP>.tlreplay`, instead of whole episodes.
     #[arg(long, requires = "record")]
     record_goals: bool,
+
+    /// Show progress through the scenario's curriculum: a line when the env moves to the next
+    /// lesson and a table of the lessons (episodes, the window's metrics, when each advanced);
+    /// with `--json`, a `curriculum` object and each episode's lesson.
+    #[arg(long)]
+    curriculum: bool,
 }
 
 /// How actions are chosen for every controlled player.
@@ -156,6 +163,9 @@ struct Report<'a> {
     checkpoints: bool,
     episodes: Vec<EpisodeRecord>,
     summary: Summary,
+    /// Progress through the lessons, with `--curriculum`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    curriculum: Option<LessonLog>,
 }
 
 /// One played episode.
@@ -176,6 +186,9 @@ struct EpisodeRecord {
     /// Match statistics, with `--stats`.
     #[serde(skip_serializing_if = "Option::is_none")]
     stats: Option<StatsLine>,
+    /// 0-based lesson the episode was played in, with `--curriculum`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lesson: Option<usize>,
 }
 
 impl EpisodeRecord {
@@ -229,14 +242,18 @@ impl Summary {
 /// Runs `touchline run`.
 pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     let scenario = touchline_dsl::load(&args.scenario)?;
+    if args.curriculum && scenario.curriculum.is_none() {
+        return Err(CliError::NoCurriculum { scenario: args.scenario.clone() });
+    }
     let config = EnvConfig {
         left_agents: args.left_agents,
         right_agents: args.right_agents,
         action_set: args.policy.action_set(),
         checkpoints: args.checkpoints,
     };
-    let controllable = scenario.controllable_players();
-    let expected_steps = u64::from(scenario.game_duration) + 1;
+    let first = scenario.curriculum.as_ref().and_then(|c| c.lessons.first()).map_or(&scenario, |l| &l.scenario);
+    let controllable = first.controllable_players();
+    let expected_steps = u64::from(first.game_duration) + 1;
     let dir = touchline_dsl::script_dir(&args.scenario);
     let mut env = touchline_dsl::build_env(scenario, &dir, config, args.seed).map_err(|e| match e {
         touchline_dsl::BuildError::Engine(source) => CliError::Config {
@@ -257,6 +274,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
         bar.suspend(|| write_header(&mut out, args, env.scenario(), env.num_controllers()))?;
     }
 
+    let mut lessons = if args.curriculum { LessonLog::new(&env) } else { None };
     let mut agent = Agent::new(args.policy, args.seed);
     let mut actions = vec![Action::Idle; env.num_controllers()];
     let mut records = Vec::new();
@@ -268,6 +286,11 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     for i in 0..args.episodes {
         if i > 0 {
             env.reset();
+            if let Some(line) = lessons.as_mut().and_then(|l| l.after_reset(&env, i))
+                && !args.json
+            {
+                bar.suspend(|| writeln!(out, "{line}"))?;
+            }
         }
         let mut recorder = (args.record.is_some() && i % args.record_every == 0).then(|| Recorder::start(&env));
         let mut reward = 0.0_f64;
@@ -307,7 +330,11 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
             terminated: outcome.terminated,
             truncated: outcome.truncated,
             stats: args.stats.then(|| StatsLine::from(env.game().stats())),
+            lesson: lessons.as_ref().map(|_| info.lesson),
         };
+        if let Some(log) = lessons.as_mut() {
+            log.episode_done(&env);
+        }
         // The bar's length assumed every episode runs to the time limit: drop what was not played.
         bar.set_length(bar.length().unwrap_or(0).saturating_sub(expected_steps.saturating_sub(u64::from(info.steps))));
         if !args.json {
@@ -352,11 +379,15 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
             checkpoints: args.checkpoints,
             episodes: records,
             summary,
+            curriculum: lessons,
         };
         serde_json::to_writer_pretty(&mut out, &report).map_err(io::Error::from)?;
         writeln!(out)?;
     } else {
         write_summary(&mut out, &summary)?;
+        if let Some(log) = &lessons {
+            log.write(&mut out)?;
+        }
     }
     out.flush()?;
     Ok(())
@@ -491,6 +522,7 @@ mod tests {
             terminated: true,
             truncated: false,
             stats: None,
+            lesson: None,
         };
         let s = Summary::new(&[record([1, 0], 10, 1.0), record([0, 2], 30, -1.0)], Duration::from_secs(2));
         assert_eq!(s.mean_score, [0.5, 1.0]);

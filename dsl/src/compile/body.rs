@@ -68,6 +68,11 @@ const KEYS: [&str; 15] = [
     "swap_teams_on_odd_episodes",
 ];
 
+/// Whether `name` is a configuration key.
+pub(crate) fn is_key(name: &str) -> bool {
+    KEYS.contains(&name)
+}
+
 /// Applies `def`'s statements (except `extends`, which the caller resolved) to `s`.
 pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r: &mut Reader<'_>) {
     let mut seen: HashMap<String, Span> = HashMap::new();
@@ -89,7 +94,14 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             StatementKind::Behaviour { player, .. } => {
                 format!("behaviour {}", r.source.inner().get(player.span.start..player.span.end).unwrap_or_default())
             }
-            StatementKind::Require { .. } | StatementKind::Reward { .. } | StatementKind::RewardOn(_) => String::new(),
+            StatementKind::Curriculum(_) => "curriculum".to_owned(),
+            StatementKind::Advance(_) => "advance when".to_owned(),
+            // Parameters are gathered (and checked for duplicates) before the body is applied.
+            StatementKind::Require { .. }
+            | StatementKind::Reward { .. }
+            | StatementKind::RewardOn(_)
+            | StatementKind::Param { .. }
+            | StatementKind::Assign { .. } => String::new(),
         };
         // A team block may be long: its first line (`team left …`) stands for it.
         let head = match &st.kind {
@@ -155,6 +167,12 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             }
             StatementKind::End(conditions) => deferred.ends = condition::end_when(conditions, s, r),
             StatementKind::StartFrom(path) => start_from(path, s, r),
+            // Read by the compiler: parameters before the body, a curriculum and its criteria
+            // after the scenario is complete.
+            StatementKind::Param { .. }
+            | StatementKind::Assign { .. }
+            | StatementKind::Curriculum(_)
+            | StatementKind::Advance(_) => {}
         }
     }
     // Behaviours, conditions and requires name players, so they are read once this body's teams

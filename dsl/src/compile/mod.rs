@@ -7,7 +7,9 @@ mod behaviour;
 mod body;
 mod check;
 mod condition;
+mod curriculum;
 mod events;
+mod params;
 mod pitch;
 mod value;
 
@@ -22,7 +24,11 @@ use crate::diagnostic::{Code, Diagnostic, Diagnostics, Source};
 use crate::syntax::{self, Definition, Item, Kind, StatementKind};
 use crate::{stdlib, suggest};
 use body::Origins;
+use params::{Param, Params};
 use value::{Reader, suggest_help};
+
+/// A resolved definition: the scenario, where its parts were written, and its parameters.
+type Resolved = (Scenario, Origins, Params);
 
 /// The built-in presets every file may extend (`academy`).
 pub const PRELUDE: &str = include_str!("../../../stdlib-scenarios/prelude.tl");
@@ -101,6 +107,7 @@ pub fn check_file(path: &Path) -> Diagnostics {
         }
         c.report_unused_imports();
     }
+    c.diags.dedup();
     c.diags
 }
 
@@ -119,7 +126,7 @@ struct Compiler {
     units: Vec<Unit>,
     by_path: HashMap<PathBuf, usize>,
     diags: Diagnostics,
-    cache: HashMap<(usize, usize), Option<(Scenario, Origins)>>,
+    cache: HashMap<(usize, usize), Option<Resolved>>,
     stack: Vec<(usize, usize)>,
     used_imports: Vec<(usize, usize)>,
     files: Vec<PathBuf>,
@@ -171,10 +178,17 @@ impl Compiler {
             }
         };
         let resolved = self.resolve(main, def);
-        self.report_unused_imports();
-        let Some((scenario, origins)) = resolved else { return Err(self.diags) };
+        let Some((mut scenario, origins, _)) = resolved else {
+            self.report_unused_imports();
+            self.diags.dedup();
+            return Err(self.diags);
+        };
         let name_span = self.definition(main, def).name.span;
         check::check(&scenario, &origins, &source, name_span, &mut self.diags);
+        scenario.curriculum = self.curriculum(main, def);
+        self.report_unused_imports();
+        // A parent resolved for several children (or lessons) reports its mistakes once.
+        self.diags.dedup();
         if self.diags.has_errors() {
             return Err(self.diags);
         }
@@ -331,19 +345,48 @@ impl Compiler {
     }
 
     /// The scenario definition `(unit, def)` describes, with its parents applied first.
-    fn resolve(&mut self, unit: usize, def: usize) -> Option<(Scenario, Origins)> {
-        if let Some(done) = self.cache.get(&(unit, def)) {
+    fn resolve(&mut self, unit: usize, def: usize) -> Option<Resolved> {
+        self.resolve_with(unit, def, &Params::default())
+    }
+
+    /// As [`Compiler::resolve`], with `overrides` (from a definition extending this one, or a
+    /// lesson) replacing the values of parameters of the same name along the whole chain.
+    fn resolve_with(&mut self, unit: usize, def: usize, overrides: &Params) -> Option<Resolved> {
+        let cached = overrides.is_empty();
+        if cached && let Some(done) = self.cache.get(&(unit, def)) {
             return done.clone();
         }
         let d = self.definition(unit, def).clone();
         let source = self.units[unit].source.clone();
+        let (declared, assigned) = params::of_statements(&d.statements, &source);
+        self.check_param_duplicates(&declared, &source);
+        if d.kind == Kind::Preset
+            && let Some(st) = d.statements.iter().find(|s| matches!(s.kind, StatementKind::Curriculum(_)))
+        {
+            self.diags.push(
+                Diagnostic::new(
+                    Code::CurriculumShape,
+                    "a curriculum belongs in a scenario",
+                    &source,
+                    st.span,
+                    "in a preset",
+                )
+                .with_help("curricula are not inherited through `extends`: move it to the scenario that plays it"),
+            );
+        }
+        // What the parent chain sees: this definition's values, then those given from below.
+        let mut down = Params::default();
+        for p in declared.iter().chain(&assigned) {
+            down.set(p.clone());
+        }
+        let down = down.overridden_by(overrides);
         let parent = d.statements.iter().find_map(|s| match &s.kind {
             StatementKind::Extends(name) => Some(name.clone()),
             _ => None,
         });
         self.stack.push((unit, def));
         let base = match parent {
-            None => Some((Scenario::default(), Origins::default())),
+            None => Some((Scenario::default(), Origins::default(), Params::default())),
             Some(name) => match self.lookup(unit, &name.value) {
                 Some(target) if self.stack.contains(&target) => {
                     let chain: Vec<String> = self
@@ -365,7 +408,7 @@ impl Compiler {
                     );
                     None
                 }
-                Some((u, i)) => self.resolve(u, i),
+                Some((u, i)) => self.resolve_with(u, i, &down),
                 None => {
                     let names = self.visible_names(unit);
                     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
@@ -389,15 +432,79 @@ impl Compiler {
         };
         // Without a parent the body is still read, so that its own mistakes are reported too.
         let parent_ok = base.is_some();
-        let (mut scenario, mut origins) = base.unwrap_or_default();
-        let mut reader = Reader { source: &source, diags: &mut self.diags };
+        let (mut scenario, mut origins, mut env) = base.unwrap_or_default();
+        for p in &declared {
+            env.set(down.get(&p.name).cloned().unwrap_or_else(|| p.clone()));
+        }
+        self.assign_params(&mut env, &assigned, &down, &source, None);
+        let mut reader = Reader::new(&source, &mut self.diags, &env);
         body::apply(&d, &mut scenario, &mut origins, &mut reader);
         scenario.name = d.name.value.clone();
         scenario.description = description(&d.docs);
-        let result = parent_ok.then_some((scenario, origins));
+        let result = parent_ok.then_some((scenario, origins, env));
         self.stack.pop();
-        self.cache.insert((unit, def), result.clone());
+        if cached {
+            self.cache.insert((unit, def), result.clone());
+        }
         result
+    }
+
+    /// `tl::E141` for a parameter declared twice in one body.
+    fn check_param_duplicates(&mut self, declared: &[Param], source: &Source) {
+        for (i, p) in declared.iter().enumerate() {
+            if let Some(first) = declared[..i].iter().find(|q| q.name == p.name) {
+                self.diags.push(
+                    Diagnostic::new(
+                        Code::ParamRedefined,
+                        format!("param `{}` is declared twice", p.name),
+                        source,
+                        p.span,
+                        "declared again here",
+                    )
+                    .with_label(first.span, "first declared here")
+                    .with_help(format!(
+                        "declare it once; to give an inherited param another value write `{} = VALUE`",
+                        p.name
+                    )),
+                );
+            }
+        }
+    }
+
+    /// Gives `env`'s parameters the values of `assigned` (`NAME = VALUE`), unless `down` (from
+    /// below) gives them already; `tl::E140` for a name `env` does not have. `lesson` names the
+    /// lesson the assignments belong to, for the message.
+    fn assign_params(
+        &mut self,
+        env: &mut Params,
+        assigned: &[Param],
+        down: &Params,
+        source: &Source,
+        lesson: Option<&str>,
+    ) {
+        for a in assigned {
+            if env.get(&a.name).is_none() {
+                let names = env.names();
+                let close = suggest::closest(&a.name, &names);
+                let message = match lesson {
+                    Some(l) => format!("lesson `{l}` sets `{}`, which is not a param", a.name),
+                    None => format!("`{}` is not a param", a.name),
+                };
+                let otherwise = if body::is_key(&a.name) {
+                    format!("`{}` is a configuration key: write `{} VALUE`, without `=`", a.name, a.name)
+                } else if names.is_empty() {
+                    "no param is declared; declare one with `param NAME = VALUE`".to_owned()
+                } else {
+                    format!("the params are {}", names.join(", "))
+                };
+                self.diags.push(
+                    Diagnostic::new(Code::UnknownParam, message, source, a.span, "unknown param")
+                        .with_help(suggest_help(&close, &otherwise)),
+                );
+                continue;
+            }
+            env.set(down.get(&a.name).cloned().unwrap_or_else(|| a.clone()));
+        }
     }
 
     fn report_unused_imports(&mut self) {

@@ -4,10 +4,11 @@
 
 use touchline_engine::scenario::{Distribution, Region, Sample, Spot};
 
+use super::params::Params;
 use super::pitch::{self, BALL_X_METRES, BALL_Y_METRES, PLAYER_X_METRES, PLAYER_Y_METRES};
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Source};
 use crate::suggest;
-use crate::syntax::{Argument, Expr, ExprKind, Place, Span};
+use crate::syntax::{Argument, BinaryOp, Expr, ExprKind, Place, Span};
 
 /// Whose coordinates a place is in: a player's (team's own frame) or the ball's (global).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,13 +36,215 @@ impl Frame {
     }
 }
 
+/// A number after arithmetic, with its unit (`None`: a plain number).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Number {
+    /// The value.
+    pub(crate) value: f64,
+    /// The unit, if any.
+    pub(crate) unit: Option<String>,
+    /// Where the unit is written (the whole expression when it has none).
+    pub(crate) unit_span: Span,
+}
+
+/// How the numbers at the leaves of an arithmetic expression are read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Leaves {
+    /// As written: `10 m` stays 10 metres.
+    AsWritten,
+    /// As a coordinate along an axis: metres convert to scenario units, so `0.5 + 10 m` adds.
+    Coordinate(Frame, Axis),
+    /// As a count of this unit, which plain numbers are too: `half * 2 + 1` with `half = 100
+    /// steps` is 201 steps.
+    Count(&'static str),
+}
+
 /// Reads expressions of one source, collecting diagnostics.
 pub(crate) struct Reader<'a> {
     pub(crate) source: &'a Source,
     pub(crate) diags: &'a mut Diagnostics,
+    /// The parameters in scope (`param gap = 10 m`): a one-name path reads as its value.
+    pub(crate) params: &'a Params,
+    /// The parameters being read now, innermost last (a parameter whose value names itself,
+    /// directly or not, is an error rather than endless recursion).
+    pub(crate) expanding: Vec<String>,
 }
 
-impl Reader<'_> {
+impl<'a> Reader<'a> {
+    /// A reader of `source` with the parameters `params`.
+    pub(crate) fn new(source: &'a Source, diags: &'a mut Diagnostics, params: &'a Params) -> Reader<'a> {
+        Reader { source, diags, params, expanding: Vec::new() }
+    }
+
+    /// When `e` names a parameter, reads its value with `read` and returns `Some(result)`;
+    /// `None` when it does not. Problems found in the value are reported at `e` (the use),
+    /// as `tl::E142`, since the same value may fit one use and not another.
+    pub(crate) fn through_param<T>(
+        &mut self,
+        e: &Expr,
+        read: impl FnOnce(&mut Self, &Expr) -> Option<T>,
+    ) -> Option<Option<T>> {
+        let ExprKind::Path { head, field: None } = &e.kind else { return None };
+        let params: &'a Params = self.params;
+        let param = params.get(&head.value)?;
+        if self.expanding.contains(&param.name) {
+            let chain = self.expanding.join(" → ");
+            self.error_help(
+                Code::ParamValue,
+                format!("param `{}` is defined in terms of itself ({chain} → {})", param.name, param.name),
+                e.span,
+                "refers back to itself",
+                "give one of these params a value that does not name the others",
+            );
+            return Some(None);
+        }
+        let before = self.diags.items.len();
+        let use_source: &'a Source = self.source;
+        self.source = &param.source;
+        self.expanding.push(param.name.clone());
+        let result = read(self, &param.value);
+        self.expanding.pop();
+        self.source = use_source;
+        let same_file = std::sync::Arc::ptr_eq(&param.source, use_source);
+        let shown = crate::format::expr_text(&param.value);
+        for d in &mut self.diags.items[before..] {
+            if d.code.is_warning() {
+                continue;
+            }
+            if d.code != Code::ParamValue {
+                d.message = format!("param `{}` (= {shown}) does not fit here: {}", param.name, d.message);
+                d.code = Code::ParamValue;
+            }
+            d.source = use_source.clone();
+            d.labels = vec![(e.span, format!("`{}` is {shown}", param.name))];
+            if same_file {
+                d.labels.push((param.span, "given here".to_owned()));
+            }
+        }
+        Some(result)
+    }
+
+    /// Evaluates the arithmetic of `e` to a number with a unit. `expected` says what a
+    /// non-number should have been (for the wrong-type message) and `help` what to write.
+    fn number(&mut self, e: &Expr, leaves: Leaves, expected: &str, help: &str) -> Option<Number> {
+        if let Some(result) = self.through_param(e, |r, v| r.number(v, leaves, expected, help)) {
+            return result;
+        }
+        match &e.kind {
+            ExprKind::Quantity { value, unit, .. } => {
+                let unit_span = unit.as_ref().map_or(e.span, |u| u.span);
+                match (leaves, unit) {
+                    (Leaves::Count(counted), Some(u)) if u.value == counted => {
+                        Some(Number { value: *value, unit: None, unit_span })
+                    }
+                    (Leaves::AsWritten | Leaves::Count(_), _) | (Leaves::Coordinate(..), None) => {
+                        Some(Number { value: *value, unit: unit.as_ref().map(|u| u.value.clone()), unit_span })
+                    }
+                    (Leaves::Coordinate(frame, axis), Some(u)) if u.value == "m" => {
+                        Some(Number { value: value / frame.metres(axis), unit: None, unit_span })
+                    }
+                    (Leaves::Coordinate(..), Some(u)) => {
+                        self.error_help(
+                            Code::WrongUnit,
+                            format!("a position takes scenario units or metres, not `{}`", u.value),
+                            u.span,
+                            "not a length unit",
+                            "write a plain number (x in [-1, 1], y in [-0.42, 0.42]) or metres, e.g. `10 m`",
+                        );
+                        None
+                    }
+                }
+            }
+            ExprKind::Paren(inner) => self.number(inner, leaves, expected, help),
+            ExprKind::Negation(inner) => {
+                let n = self.number(inner, leaves, expected, help)?;
+                Some(Number { value: -n.value, ..n })
+            }
+            ExprKind::Binary { op, lhs, rhs } => {
+                let a = self.number(lhs, leaves, expected, help);
+                let b = self.number(rhs, leaves, expected, help);
+                self.arithmetic(*op, a?, b?, e.span)
+            }
+            ExprKind::Path { head, field: None } if !self.params.is_empty() && !is_keyword(&head.value) => {
+                let names = self.params.names();
+                let close = suggest::closest(&head.value, &names);
+                self.error_help(
+                    Code::UnknownParam,
+                    format!("unknown param `{}`", head.value),
+                    head.span,
+                    "not a param",
+                    suggest_help(
+                        &close,
+                        &format!("the params are {}; declare others with `param NAME = VALUE`", names.join(", ")),
+                    ),
+                );
+                None
+            }
+            _ => {
+                self.wrong_type(expected, e, help);
+                None
+            }
+        }
+    }
+
+    /// `a op b` with units: `+` `-` need the same unit, `*` at most one unit, `/` a plain
+    /// divisor or the same unit on both sides (giving a plain number).
+    fn arithmetic(&mut self, op: BinaryOp, a: Number, b: Number, span: Span) -> Option<Number> {
+        let unit_name = |u: &Option<String>| u.as_ref().map_or("a plain number".to_owned(), |u| format!("`{u}`"));
+        let mismatch = |r: &mut Self, what: &str| {
+            r.error_help(
+                Code::WrongUnit,
+                format!("cannot {what} {} and {}", unit_name(&a.unit), unit_name(&b.unit)),
+                span,
+                "units do not match",
+                "give both sides the same unit (in a position, plain numbers and metres mix: metres convert)",
+            );
+            None
+        };
+        let (value, unit, unit_span) = match op {
+            BinaryOp::Add | BinaryOp::Sub => {
+                if a.unit != b.unit {
+                    return mismatch(self, if op == BinaryOp::Add { "add" } else { "subtract" });
+                }
+                let v = if op == BinaryOp::Add { a.value + b.value } else { a.value - b.value };
+                (v, a.unit, a.unit_span)
+            }
+            BinaryOp::Mul => match (&a.unit, &b.unit) {
+                (Some(_), Some(_)) => return mismatch(self, "multiply"),
+                (Some(_), None) => (a.value * b.value, a.unit, a.unit_span),
+                _ => (a.value * b.value, b.unit, b.unit_span),
+            },
+            BinaryOp::Div => {
+                if b.value == 0.0 {
+                    self.error_help(
+                        Code::OutOfRange,
+                        "division by zero",
+                        span,
+                        "divides by 0",
+                        "divide by a number other than 0",
+                    );
+                    return None;
+                }
+                match (&a.unit, &b.unit) {
+                    (_, None) => (a.value / b.value, a.unit, a.unit_span),
+                    (Some(x), Some(y)) if x == y => (a.value / b.value, None, span),
+                    _ => return mismatch(self, "divide"),
+                }
+            }
+        };
+        if !value.is_finite() {
+            self.error_help(
+                Code::OutOfRange,
+                "the result is not a finite number",
+                span,
+                "overflows",
+                "use smaller numbers",
+            );
+            return None;
+        }
+        Some(Number { value, unit, unit_span })
+    }
+
     pub(crate) fn error_help(
         &mut self,
         code: Code,
@@ -66,6 +269,9 @@ impl Reader<'_> {
 
     /// `true` or `false`.
     pub(crate) fn boolean(&mut self, e: &Expr) -> Option<bool> {
+        if let Some(result) = self.through_param(e, Self::boolean) {
+            return result;
+        }
         match &e.kind {
             ExprKind::Path { head, field: None } if head.value == "true" => Some(true),
             ExprKind::Path { head, field: None } if head.value == "false" => Some(false),
@@ -78,27 +284,28 @@ impl Reader<'_> {
 
     /// A plain number (no unit).
     pub(crate) fn plain_number(&mut self, e: &Expr, what: &str) -> Option<f64> {
-        match &e.kind {
-            ExprKind::Quantity { value, unit: None, .. } => Some(*value),
-            ExprKind::Quantity { unit: Some(u), .. } => {
-                self.error_help(
-                    Code::WrongUnit,
-                    format!("{what} takes a plain number, not `{}`", u.value),
-                    u.span,
-                    "unit not allowed here",
-                    "remove the unit",
-                );
-                None
-            }
-            _ => {
-                self.wrong_type(&format!("a number ({what})"), e, "write a plain number, e.g. `0.5`");
-                None
-            }
+        if let Some(result) = self.through_param(e, |r, v| r.plain_number(v, what)) {
+            return result;
         }
+        let n = self.number(e, Leaves::AsWritten, &format!("a number ({what})"), "write a plain number, e.g. `0.5`")?;
+        if let Some(u) = &n.unit {
+            self.error_help(
+                Code::WrongUnit,
+                format!("{what} takes a plain number, not `{u}`"),
+                n.unit_span,
+                "unit not allowed here",
+                "remove the unit",
+            );
+            return None;
+        }
+        Some(n.value)
     }
 
     /// A number in [0, 1] (a difficulty).
     pub(crate) fn fraction(&mut self, e: &Expr, what: &str) -> Option<f32> {
+        if let Some(result) = self.through_param(e, |r, v| r.fraction(v, what)) {
+            return result;
+        }
         let v = self.plain_number(e, what)?;
         if !(0.0..=1.0).contains(&v) {
             self.error_help(
@@ -115,28 +322,38 @@ impl Reader<'_> {
 
     /// A whole number of steps, plain or with the unit `steps`, at least `min`.
     pub(crate) fn steps(&mut self, e: &Expr, what: &str, min: u32) -> Option<u32> {
-        let value = match &e.kind {
-            ExprKind::Quantity { value, unit: None, .. } => *value,
-            ExprKind::Quantity { value, unit: Some(u), .. } if u.value == "steps" => *value,
-            ExprKind::Quantity { unit: Some(u), .. } => {
-                self.error_help(
-                    Code::WrongUnit,
-                    format!("{what} is a duration in steps, not in `{}`", u.value),
-                    u.span,
-                    "not a duration unit",
-                    "write a whole number of env steps (10 steps = 1 s of game time), e.g. `400` or `400 steps`",
-                );
-                return None;
-            }
-            _ => {
-                self.wrong_type(
-                    &format!("a number of steps ({what})"),
-                    e,
-                    "write a whole number, e.g. `400` or `400 steps`",
-                );
-                return None;
-            }
-        };
+        self.whole(
+            e,
+            what,
+            min,
+            "steps",
+            "write a whole number of env steps (10 steps = 1 s of game time), e.g. `400` or `400 steps`",
+        )
+    }
+
+    /// A whole number, plain or with the unit `unit`, at least `min`; `help` for a wrong unit.
+    pub(crate) fn whole(&mut self, e: &Expr, what: &str, min: u32, unit: &'static str, help: &str) -> Option<u32> {
+        if let Some(result) = self.through_param(e, |r, v| r.whole(v, what, min, unit, help)) {
+            return result;
+        }
+        let n = self.number(
+            e,
+            Leaves::Count(unit),
+            &format!("a number of {unit} ({what})"),
+            &format!("write a whole number, e.g. `400` or `400 {unit}`"),
+        )?;
+        let value = n.value;
+        if let Some(u) = n.unit.as_ref().filter(|u| *u != unit) {
+            let kind = if unit == "steps" { "a duration in steps".to_owned() } else { format!("a number of {unit}") };
+            self.error_help(
+                Code::WrongUnit,
+                format!("{what} is {kind}, not in `{u}`"),
+                n.unit_span,
+                if unit == "steps" { "not a duration unit" } else { "wrong unit" },
+                help,
+            );
+            return None;
+        }
         if value.fract() != 0.0 || value < f64::from(min) || value > f64::from(u32::MAX) {
             self.error_help(
                 Code::OutOfRange,
@@ -152,62 +369,44 @@ impl Reader<'_> {
 
     /// A distance in metres (the unit `m` is required).
     pub(crate) fn metres(&mut self, e: &Expr) -> Option<f32> {
-        match &e.kind {
-            ExprKind::Quantity { value, unit: Some(u), .. } if u.value == "m" && *value >= 0.0 => Some(*value as f32),
-            ExprKind::Quantity { value, unit: Some(u), .. } if u.value == "m" => {
+        if let Some(result) = self.through_param(e, Self::metres) {
+            return result;
+        }
+        let n = self.number(e, Leaves::AsWritten, "a distance in metres", "write metres, e.g. `5 m`")?;
+        match n.unit.as_deref() {
+            Some("m") if n.value >= 0.0 => Some(n.value as f32),
+            Some("m") => {
                 self.error_help(
                     Code::OutOfRange,
-                    format!("a distance cannot be negative ({value} m)"),
+                    format!("a distance cannot be negative ({} m)", n.value),
                     e.span,
                     "negative",
                     "write a distance of 0 m or more",
                 );
                 None
             }
-            ExprKind::Quantity { unit, .. } => {
-                let span = unit.as_ref().map_or(e.span, |u| u.span);
+            _ => {
                 self.error_help(
                     Code::WrongUnit,
                     "a distance needs the unit `m`",
-                    span,
+                    n.unit_span,
                     "no distance unit",
                     "write metres, e.g. `5 m`",
                 );
                 None
             }
-            _ => {
-                self.wrong_type("a distance in metres", e, "write metres, e.g. `5 m`");
-                None
-            }
         }
     }
 
-    /// One coordinate as a number: scenario units, or metres with `m`.
+    /// One coordinate as a number: scenario units, or metres with `m`, with arithmetic.
     fn coordinate(&mut self, e: &Expr, frame: Frame, axis: Axis) -> Option<f32> {
-        match &e.kind {
-            ExprKind::Quantity { value, unit: None, .. } => Some(*value as f32),
-            ExprKind::Quantity { value, unit: Some(u), .. } if u.value == "m" => {
-                Some((value / frame.metres(axis)) as f32)
-            }
-            ExprKind::Quantity { unit: Some(u), .. } => {
-                self.error_help(
-                    Code::WrongUnit,
-                    format!("a position takes scenario units or metres, not `{}`", u.value),
-                    u.span,
-                    "not a length unit",
-                    "write a plain number (x in [-1, 1], y in [-0.42, 0.42]) or metres, e.g. `10 m`",
-                );
-                None
-            }
-            _ => {
-                self.wrong_type(
-                    "a number",
-                    e,
-                    "write a plain number (x in [-1, 1], y in [-0.42, 0.42]) or metres, e.g. `10 m`",
-                );
-                None
-            }
-        }
+        self.number(
+            e,
+            Leaves::Coordinate(frame, axis),
+            "a number",
+            "write a plain number (x in [-1, 1], y in [-0.42, 0.42]) or metres, e.g. `10 m`",
+        )
+        .map(|n| n.value as f32)
     }
 
     fn arity(&mut self, name: &str, args: &[Argument], n: usize, span: Span, usage: &str) -> bool {
@@ -226,6 +425,9 @@ impl Reader<'_> {
 
     /// A coordinate: a number, `uniform(a, b)`, `normal(mean, std)` or `choice[a, b, …]`.
     pub(crate) fn sample(&mut self, e: &Expr, frame: Frame, axis: Axis) -> Option<Sample> {
+        if let Some(result) = self.through_param(e, |r, v| r.sample(v, frame, axis)) {
+            return result;
+        }
         match &e.kind {
             ExprKind::Call { name, args } => {
                 let usage = match name.value.as_str() {
@@ -296,6 +498,9 @@ impl Reader<'_> {
 
     /// A fixed point `(x, y)`.
     pub(crate) fn fixed_point(&mut self, e: &Expr, frame: Frame) -> Option<[f32; 2]> {
+        if let Some(result) = self.through_param(e, |r, v| r.fixed_point(v, frame)) {
+            return result;
+        }
         let ExprKind::Tuple(args) = &e.kind else {
             self.wrong_type("a point `(x, y)`", e, "write a point as `(x, y)`");
             return None;
@@ -311,6 +516,9 @@ impl Reader<'_> {
 
     /// A region: a named one (`penalty_area`), `circle(x, y, r)` or `rect((x0, y0), (x1, y1))`.
     pub(crate) fn region(&mut self, e: &Expr, frame: Frame) -> Option<Region> {
+        if let Some(result) = self.through_param(e, |r, v| r.region(v, frame)) {
+            return result;
+        }
         match &e.kind {
             ExprKind::Path { head, field: None } => pitch::region(&head.value).or_else(|| {
                 let close = suggest::closest(&head.value, &pitch::REGION_NAMES);
@@ -391,7 +599,17 @@ impl Reader<'_> {
                 let region = self.region(e, frame)?;
                 Some((region.centre(), Some(Spot::In(region))))
             }
-            Place::At(e) => match &e.kind {
+            Place::At(e) => self.place_at(e, frame),
+        }
+    }
+
+    /// `at EXPR` of [`Reader::place`].
+    fn place_at(&mut self, e: &Expr, frame: Frame) -> Option<([f32; 2], Option<Spot>)> {
+        if let Some(result) = self.through_param(e, |r, v| r.place_at(v, frame)) {
+            return result;
+        }
+        {
+            match &e.kind {
                 ExprKind::Tuple(args) if args.len() == 2 => {
                     let x = self.sample(&args[0].value, frame, Axis::X);
                     let y = self.sample(&args[1].value, frame, Axis::Y);
@@ -428,7 +646,7 @@ impl Reader<'_> {
                     );
                     None
                 }
-            },
+            }
         }
     }
 }
@@ -444,6 +662,12 @@ impl Reader<'_> {
             "write a point as `(x, y)`: positions are on the ground, so there is no height",
         );
     }
+}
+
+/// Names that are values of their own (`true`, regions, rewards, conditions), never reported as
+/// unknown params.
+fn is_keyword(name: &str) -> bool {
+    matches!(name, "true" | "false") || pitch::region(name).is_some()
 }
 
 /// A number for messages: at most 4 decimals, without trailing zeros (`0.1`, not `0.099999994`).

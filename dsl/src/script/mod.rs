@@ -195,6 +195,9 @@ impl Scripts {
     /// Every problem at once: unreadable files (`tl::S001`), syntax (`tl::S002`), a missing or
     /// wrong hook (`tl::S003`), a top level that is not only `fn`s and `const`s (`tl::S004`).
     pub fn compile(scenario: &Scenario, dir: &Path, options: ScriptOptions) -> Result<Scripts, ScriptErrors> {
+        // With a curriculum the env plays the lessons, which all run the same scripts (checked
+        // when compiling): the first lesson's are the ones to load.
+        let scenario = scenario.curriculum.as_ref().and_then(|c| c.lessons.first()).map_or(scenario, |l| &l.scenario);
         let mut wanted = Vec::new();
         for term in &scenario.rewards {
             if let RewardKind::Script { path } = &term.reward {

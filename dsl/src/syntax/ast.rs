@@ -119,6 +119,24 @@ pub enum StatementKind {
     },
     /// `start from "file"`.
     StartFrom(Spanned<String>),
+    /// `param NAME = VALUE`: declares a parameter (or overrides a parent's).
+    Param {
+        /// The parameter's name.
+        name: Spanned<String>,
+        /// Its value.
+        value: Expr,
+    },
+    /// `NAME = VALUE`: gives an existing parameter another value.
+    Assign {
+        /// The parameter's name.
+        name: Spanned<String>,
+        /// Its value.
+        value: Expr,
+    },
+    /// `curriculum { … }`.
+    Curriculum(Curriculum),
+    /// `advance when …` (inside a lesson).
+    Advance(Advance),
     /// `KEY VALUE`.
     Setting {
         /// The key.
@@ -126,6 +144,53 @@ pub enum StatementKind {
         /// The value.
         value: Expr,
     },
+}
+
+/// `curriculum { lessons, advance when … }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Curriculum {
+    /// The lessons, in the order they are played.
+    pub lessons: Vec<Lesson>,
+    /// `advance when` statements of the block itself (the criterion of every lesson without its
+    /// own); more than one is an error.
+    pub advance: Vec<Advance>,
+}
+
+/// `lesson NAME [extends SCENARIO] [{ statements }]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lesson {
+    /// The lesson's name.
+    pub name: Spanned<String>,
+    /// `extends SCENARIO`: the lesson plays that scenario instead of the curriculum's own.
+    pub parent: Option<Spanned<String>>,
+    /// Statements applied on top (parameter values, settings, `advance when`, …).
+    pub statements: Vec<Statement>,
+    /// The whole lesson.
+    pub span: Span,
+}
+
+/// `advance when METRIC >= X and … over N episodes [min M episodes]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Advance {
+    /// The thresholds, all of which must hold.
+    pub thresholds: Vec<Threshold>,
+    /// `over N episodes`: the window.
+    pub window: Expr,
+    /// `min M episodes`: episodes in the window before it is judged.
+    pub min: Option<Expr>,
+    /// The whole statement.
+    pub span: Span,
+}
+
+/// `METRIC >= X` or `METRIC <= X`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Threshold {
+    /// `mean_reward`, `mean_score` or `success_rate`.
+    pub metric: Spanned<String>,
+    /// `>=` (true) or `<=` (false).
+    pub at_least: bool,
+    /// The bound.
+    pub value: Expr,
 }
 
 /// Left or right.
@@ -369,6 +434,52 @@ pub enum ExprKind {
         /// `.field`.
         field: Option<Spanned<String>>,
     },
+    /// `a + b`, `a - b`, `a * b`, `a / b`.
+    Binary {
+        /// The operator.
+        op: BinaryOp,
+        /// Left operand.
+        lhs: Box<Expr>,
+        /// Right operand.
+        rhs: Box<Expr>,
+    },
+    /// `-a`.
+    Negation(Box<Expr>),
+    /// `(a)`: a parenthesised expression.
+    Paren(Box<Expr>),
+}
+
+/// An arithmetic operator.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinaryOp {
+    /// `+`.
+    Add,
+    /// `-`.
+    Sub,
+    /// `*`.
+    Mul,
+    /// `/`.
+    Div,
+}
+
+impl BinaryOp {
+    /// The operator as written.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            BinaryOp::Add => "+",
+            BinaryOp::Sub => "-",
+            BinaryOp::Mul => "*",
+            BinaryOp::Div => "/",
+        }
+    }
+
+    /// Binding strength: `*` `/` bind tighter than `+` `-`.
+    pub fn precedence(self) -> u8 {
+        match self {
+            BinaryOp::Add | BinaryOp::Sub => 1,
+            BinaryOp::Mul | BinaryOp::Div => 2,
+        }
+    }
 }
 
 /// A positional or named argument.
@@ -392,6 +503,9 @@ impl Expr {
             ExprKind::Str(_) => "a string".into(),
             ExprKind::Path { head, field: None } => format!("the name `{}`", head.value),
             ExprKind::Path { head, field: Some(f) } => format!("the name `{}.{}`", head.value, f.value),
+            ExprKind::Binary { op, .. } => format!("an arithmetic expression (`{}`)", op.symbol()),
+            ExprKind::Negation(_) => "a negation".into(),
+            ExprKind::Paren(inner) => inner.describe(),
         }
     }
 }

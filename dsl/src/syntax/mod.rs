@@ -44,8 +44,20 @@ pub fn parse(source: &Source) -> Result<File, Box<Diagnostic>> {
 
 /// Words that begin a statement; one met where a player's role was read means that the team
 /// block above lacks its `}`.
-const STATEMENT_KEYWORDS: [&str; 10] =
-    ["team", "ball", "extends", "require", "reward", "end", "on", "start", "import", "behaviour"];
+const STATEMENT_KEYWORDS: [&str; 12] = [
+    "team",
+    "ball",
+    "extends",
+    "require",
+    "reward",
+    "end",
+    "on",
+    "start",
+    "import",
+    "behaviour",
+    "param",
+    "curriculum",
+];
 
 fn syntax_error(e: pest::error::Error<Rule>, source: &Source) -> Diagnostic {
     let (start, end) = match e.location {
@@ -67,7 +79,10 @@ fn syntax_error(e: pest::error::Error<Rule>, source: &Source) -> Diagnostic {
     let mut expected: Vec<String> = Vec::new();
     if let pest::error::ErrorVariant::ParsingError { positives, .. } = &e.variant {
         // Comments may come anywhere, so "a comment" is always possible and never worth saying.
-        for name in positives.iter().filter(|r| !matches!(r, Rule::COMMENT | Rule::WHITESPACE)).map(rule_name) {
+        // Nor is an operator, possible after every value.
+        for name in
+            positives.iter().filter(|r| !matches!(r, Rule::COMMENT | Rule::WHITESPACE | Rule::binary_op)).map(rule_name)
+        {
             if !expected.contains(&name) {
                 expected.push(name);
             }
@@ -107,7 +122,7 @@ fn expected_literals(text: &str) -> Vec<String> {
         // Only literal text (not character ranges such as `a..z`), without whitespace and `//`.
         .filter(|t| format!("{t:?}").starts_with("Sensitive"))
         .map(|t| t.to_string())
-        .filter(|t| !t.trim().is_empty() && t != "//")
+        .filter(|t| !t.trim().is_empty() && !matches!(t.as_str(), "//" | "+" | "-" | "*" | "/"))
         .map(|t| format!("`{t}`"))
         .collect()
 }
@@ -199,7 +214,14 @@ fn rule_name(rule: &Rule) -> String {
         Rule::then_word => "`then`",
         Rule::end => "`end when`",
         Rule::start_from => "`start from`",
-        Rule::setting => "a statement",
+        Rule::setting | Rule::assignment => "a statement",
+        Rule::param => "`param`",
+        Rule::curriculum => "`curriculum`",
+        Rule::lesson | Rule::lesson_parent => "`lesson`",
+        Rule::advance | Rule::advance_min => "`advance when`",
+        Rule::threshold => "a threshold (`success_rate >= 0.8`)",
+        Rule::binary_op => "an operator",
+        Rule::minus | Rule::operand_expr => "a value",
         Rule::side => "`left` or `right`",
         Rule::formation => "`formation`",
         Rule::player => "a player (`ROLE at (x, y)`)",
@@ -361,6 +383,25 @@ fn statement(pair: Pair<'_, Rule>) -> Statement {
             StatementKind::Behaviour { player, behaviour }
         }
         Rule::start_from => StatementKind::StartFrom(string(first(pair))),
+        Rule::param | Rule::assignment => {
+            let is_param = pair.as_rule() == Rule::param;
+            let mut it = inner(pair);
+            let n = it.next().expect("name");
+            let name = spanned(&n, n.as_str().to_owned());
+            let value = expr(it.next().expect("value"));
+            if is_param { StatementKind::Param { name, value } } else { StatementKind::Assign { name, value } }
+        }
+        Rule::curriculum => {
+            let mut c = Curriculum { lessons: Vec::new(), advance: Vec::new() };
+            for p in inner(pair) {
+                match p.as_rule() {
+                    Rule::lesson => c.lessons.push(lesson(p)),
+                    _ => c.advance.push(advance(p)),
+                }
+            }
+            StatementKind::Curriculum(c)
+        }
+        Rule::advance => StatementKind::Advance(advance(pair)),
         _ => {
             let mut it = inner(pair);
             let k = it.next().expect("key");
@@ -370,6 +411,47 @@ fn statement(pair: Pair<'_, Rule>) -> Statement {
         }
     };
     Statement { kind, span }
+}
+
+fn lesson(pair: Pair<'_, Rule>) -> Lesson {
+    let span = span_of(&pair);
+    let mut it = inner(pair);
+    let n = it.next().expect("name");
+    let name = spanned(&n, n.as_str().to_owned());
+    let mut parent = None;
+    let mut statements = Vec::new();
+    for p in it {
+        match p.as_rule() {
+            Rule::lesson_parent => {
+                let n = first(p);
+                parent = Some(spanned(&n, n.as_str().to_owned()));
+            }
+            _ => statements.push(statement(p)),
+        }
+    }
+    Lesson { name, parent, statements, span }
+}
+
+fn advance(pair: Pair<'_, Rule>) -> Advance {
+    let span = span_of(&pair);
+    let mut thresholds = Vec::new();
+    let mut window = None;
+    let mut min = None;
+    for p in inner(pair) {
+        match p.as_rule() {
+            Rule::threshold => {
+                let mut it = inner(p);
+                let m = it.next().expect("metric");
+                let metric = spanned(&m, m.as_str().to_owned());
+                let at_least = it.next().is_some_and(|c| c.as_str() == ">=");
+                let value = expr(it.next().expect("bound"));
+                thresholds.push(Threshold { metric, at_least, value });
+            }
+            Rule::advance_min => min = Some(expr(first(p))),
+            _ => window = Some(expr(p)),
+        }
+    }
+    Advance { thresholds, window: window.expect("the grammar requires `over`"), min, span }
 }
 
 fn team(pair: Pair<'_, Rule>) -> Team {
@@ -552,8 +634,58 @@ fn condition(pair: Pair<'_, Rule>) -> Condition {
 }
 
 fn expr(pair: Pair<'_, Rule>) -> Expr {
-    let span = span_of(&pair);
-    let e = if pair.as_rule() == Rule::expr { first(pair) } else { pair };
+    match pair.as_rule() {
+        // Operands and operators in a row, folded by precedence (left-associative).
+        Rule::expr => {
+            let mut operands = Vec::new();
+            let mut ops = Vec::new();
+            for p in inner(pair) {
+                if p.as_rule() == Rule::binary_op {
+                    ops.push(match p.as_str() {
+                        "+" => BinaryOp::Add,
+                        "-" => BinaryOp::Sub,
+                        "*" => BinaryOp::Mul,
+                        _ => BinaryOp::Div,
+                    });
+                } else {
+                    operands.push(operand(p));
+                }
+            }
+            fold(operands, &ops)
+        }
+        Rule::operand_expr => operand(first(pair)),
+        _ => operand(pair),
+    }
+}
+
+/// Folds `operands[0] ops[0] operands[1] …` into a tree: `*` `/` first, then `+` `-`, each
+/// left to right.
+fn fold(operands: Vec<Expr>, ops: &[BinaryOp]) -> Expr {
+    let mut operands = operands.into_iter();
+    let mut output: Vec<Expr> = vec![operands.next().expect("an expression has an operand")];
+    let mut pending: Vec<BinaryOp> = Vec::new();
+    let reduce = |output: &mut Vec<Expr>, op: BinaryOp| {
+        let rhs = output.pop().expect("rhs");
+        let lhs = output.pop().expect("lhs");
+        let span = Span::join(lhs.span, rhs.span);
+        output.push(Expr { kind: ExprKind::Binary { op, lhs: Box::new(lhs), rhs: Box::new(rhs) }, span });
+    };
+    for (&op, rhs) in ops.iter().zip(operands) {
+        while let Some(&top) = pending.last().filter(|top| top.precedence() >= op.precedence()) {
+            pending.pop();
+            reduce(&mut output, top);
+        }
+        pending.push(op);
+        output.push(rhs);
+    }
+    while let Some(op) = pending.pop() {
+        reduce(&mut output, op);
+    }
+    output.pop().expect("one expression left")
+}
+
+fn operand(e: Pair<'_, Rule>) -> Expr {
+    let span = span_of(&e);
     let kind = match e.as_rule() {
         Rule::call | Rule::index => {
             let is_call = e.as_rule() == Rule::call;
@@ -563,7 +695,16 @@ fn expr(pair: Pair<'_, Rule>) -> Expr {
             let args = it.next().map(arguments).unwrap_or_default();
             if is_call { ExprKind::Call { name, args } } else { ExprKind::Index { name, args } }
         }
-        Rule::tuple => ExprKind::Tuple(arguments(first(e))),
+        Rule::tuple => {
+            // `(a)` without a trailing comma groups; `(a,)` and `(a, b)` are tuples.
+            let trailing_comma = e.as_str().trim_end_matches(')').trim_end().ends_with(',');
+            let mut args = arguments(first(e));
+            if args.len() == 1 && args[0].name.is_none() && !trailing_comma {
+                ExprKind::Paren(Box::new(args.pop().expect("one argument").value))
+            } else {
+                ExprKind::Tuple(args)
+            }
+        }
         Rule::quantity => {
             let mut it = e.into_inner();
             let n = it.next().expect("number");
@@ -573,6 +714,7 @@ fn expr(pair: Pair<'_, Rule>) -> Expr {
             ExprKind::Quantity { text, value, unit }
         }
         Rule::string => ExprKind::Str(string(e).value),
+        Rule::minus => ExprKind::Negation(Box::new(operand(first(e)))),
         _ => {
             let mut it = inner(e);
             let h = it.next().expect("head");

@@ -5,6 +5,7 @@ mod config;
 mod control;
 mod end;
 mod hooks;
+mod lessons;
 mod snapshot;
 mod sticky;
 
@@ -23,8 +24,9 @@ use crate::geometry::Side;
 use crate::obs::RawObservation;
 use crate::player::{DRIBBLE_SPEED, WALK_SPEED};
 use crate::reward::{CheckpointTracker, EventProgress, EventRewards, RewardPlan, Viewpoint, scoring_reward};
-use crate::scenario::Scenario;
+use crate::scenario::{Curriculum, Metric, Scenario};
 use end::EndTracker;
+use lessons::LessonProgress;
 
 /// Ticks of play per env step: 10 × 10 ms = 0.1 s (GRF `physics_steps_per_frame`, grf.md §7.1).
 pub const TICKS_PER_STEP: u32 = 10;
@@ -66,6 +68,22 @@ pub struct StepInfo {
     pub steps: u32,
     /// 0-based episode index since the last seeding.
     pub episode: u64,
+    /// 0-based index of the curriculum lesson played (0 without a curriculum).
+    #[serde(default)]
+    pub lesson: usize,
+}
+
+/// Where an env stands in its curriculum ([`Env::curriculum_progress`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CurriculumProgress {
+    /// The lesson played, 0-based.
+    pub lesson: usize,
+    /// Number of lessons.
+    pub lessons: usize,
+    /// Episodes finished in this lesson.
+    pub episodes: u64,
+    /// Finished episodes the lesson's criterion is judged over now (at most its window).
+    pub window: usize,
 }
 
 /// One agent controller: its side and its virtual gamepad (the player it drives is in
@@ -79,7 +97,10 @@ struct Controller {
 /// A reinforcement-learning environment over one [`Scenario`].
 #[derive(Clone, Debug)]
 pub struct Env {
+    /// The scenario played: the current lesson's when there is a curriculum.
     scenario: Scenario,
+    /// The lessons, when the env was built on a scenario with a curriculum.
+    curriculum: Option<Box<Curriculum>>,
     config: EnvConfig,
     /// Every player controllable on a side has an agent: control never switches.
     fixed_control: [bool; 2],
@@ -162,29 +183,19 @@ impl Env {
     }
 
     fn build(
-        scenario: Scenario,
+        mut scenario: Scenario,
         config: EnvConfig,
         seed: u64,
         hooks: Option<Box<dyn Hooks>>,
     ) -> Result<Env, EngineError> {
         scenario.validate()?;
-        let controllable = scenario.controllable_players();
-        let mut agents = [config.left_agents, config.right_agents];
-        for side in 0..2 {
-            if scenario.control_all_players && agents[side] == 1 {
-                agents[side] = controllable[side];
-            }
-            if agents[side] > controllable[side] {
-                return Err(EngineError::InvalidConfig {
-                    reason: format!(
-                        "{} agents asked for the {} team, which has {} controllable players",
-                        agents[side],
-                        Side::from_index(side).name(),
-                        controllable[side]
-                    ),
-                });
-            }
+        let curriculum = scenario.curriculum.take();
+        if let Some(c) = &curriculum {
+            lesson_agents(c, &config, hooks.is_some())?;
+            scenario = c.lessons[0].scenario.clone();
         }
+        let controllable = scenario.controllable_players();
+        let agents = agents_for(&scenario, &config)?;
         let controllers: Vec<Controller> = (0..agents[0])
             .map(|_| Controller { side: Side::Left, sticky: StickyState::default() })
             .chain((0..agents[1]).map(|_| Controller { side: Side::Right, sticky: StickyState::default() }))
@@ -218,7 +229,9 @@ impl Env {
                 ),
             });
         }
+        let progress = LessonProgress::new(curriculum.as_ref().map_or(0, |c| c.max_window()));
         let mut env = Env {
+            curriculum,
             hooks,
             taken: vec![Action::Idle; n],
             hook_rewards: vec![0.0; n],
@@ -243,6 +256,7 @@ impl Env {
                 score_diff: 0,
                 waiting_for_game: 0,
                 hook_error: None,
+                lessons: progress,
             },
             event_rewards,
             fixed_control: [agents[0] == controllable[0], agents[1] == controllable[1]],
@@ -291,6 +305,8 @@ impl Env {
         {
             hooks.scenario_refused(&e);
         }
+        self.advance_lesson();
+        self.state.lessons.start_episode();
         self.state.episode = episode;
         self.state.fresh = true;
         self.state.game = match &self.start {
@@ -326,6 +342,7 @@ impl Env {
             script_errors: 0,
             steps: 0,
             episode,
+            lesson: self.state.lessons.lesson,
         };
         self.state.hook_error = None;
         if let Some(hooks) = self.hooks.as_mut() {
@@ -344,26 +361,65 @@ impl Env {
         }
     }
 
+    /// Moves to the next lesson when the current one's criterion holds over its window (the
+    /// last lesson stays).
+    fn advance_lesson(&mut self) {
+        let Some(c) = &self.curriculum else { return };
+        let i = self.state.lessons.lesson;
+        let Some(next) = c.lessons.get(i + 1) else { return };
+        if !c.lessons[i].advance.as_ref().is_some_and(|crit| self.state.lessons.met(crit)) {
+            return;
+        }
+        let scenario = next.scenario.clone();
+        // Every lesson was checked against the env when it was built, so this cannot fail; if
+        // it did, the env would stay on the lesson it plays.
+        if self.switch_to(scenario).is_ok() {
+            self.state.lessons.advance();
+        }
+    }
+
     /// Switches to `scenario` (from a watched source) for the episodes to come; refused, leaving
-    /// the env as it was, when it is invalid or gives a different number of controllers.
-    fn swap_scenario(&mut self, scenario: Scenario) -> Result<(), EngineError> {
+    /// the env as it was, when it is invalid or gives a different number of controllers. A
+    /// scenario with a curriculum replaces the lessons and plays the lesson of the same index.
+    fn swap_scenario(&mut self, mut scenario: Scenario) -> Result<(), EngineError> {
+        scenario.validate()?;
+        let Some(c) = scenario.curriculum.take() else {
+            let old = self.curriculum.take();
+            if let Err(e) = self.switch_to(scenario) {
+                self.curriculum = old;
+                return Err(e);
+            }
+            self.state.lessons = LessonProgress::new(0);
+            return Ok(());
+        };
+        lesson_agents(&c, &self.config, self.hooks.is_some())?;
+        let lesson = self.state.lessons.lesson.min(c.lessons.len() - 1);
+        let first = c.lessons[lesson].scenario.clone();
+        let capacity = c.max_window();
+        let old = self.curriculum.replace(c);
+        if let Err(e) = self.switch_to(first) {
+            self.curriculum = old;
+            return Err(e);
+        }
+        self.state.lessons.resize(capacity);
+        self.state.lessons.lesson = lesson;
+        Ok(())
+    }
+
+    /// Plays `scenario` from the next episode on (a lesson, or a scenario without curriculum);
+    /// refused when it gives another number of controllers than the env has.
+    fn switch_to(&mut self, scenario: Scenario) -> Result<(), EngineError> {
         scenario.validate()?;
         let controllable = scenario.controllable_players();
-        let mut agents = [self.config.left_agents, self.config.right_agents];
-        for side in 0..2 {
-            if scenario.control_all_players && agents[side] == 1 {
-                agents[side] = controllable[side];
-            }
-        }
+        let agents = agents_for(&scenario, &self.config).unwrap_or([usize::MAX, usize::MAX]);
         let (left, n) = (self.controller_span(Side::Left).1, self.state.controllers.len());
-        if agents[0] != left || agents[0] + agents[1] != n || agents[0] > controllable[0] || agents[1] > controllable[1]
-        {
+        if agents[0] != left || agents[0].saturating_add(agents[1]) != n {
             return Err(EngineError::InvalidScenario {
                 reason: format!(
                     "the edited scenario gives {} left and {} right controllers, the env has {left} and {}; \
                      restart to change the number of agents",
-                    agents[0],
-                    agents[1],
+                    agents[0].min(controllable[0]),
+                    agents[1].min(controllable[1]),
                     n - left
                 ),
             });
@@ -499,6 +555,9 @@ impl Env {
         let (hooks_end, script_reward, script_errors) = self.run_hooks()?;
         let terminated = terminated || hooks_end;
         self.state.done = terminated || truncated;
+        if self.curriculum.is_some() {
+            self.record_lesson_step(diff);
+        }
         self.state.info = StepInfo {
             score,
             steps_left: self.steps_left(),
@@ -510,6 +569,7 @@ impl Env {
             script_errors: self.state.info.script_errors + script_errors,
             steps: self.state.steps,
             episode: self.state.episode,
+            lesson: self.state.lessons.lesson,
         };
         Ok(StepOutcome { terminated, truncated })
     }
@@ -580,6 +640,19 @@ impl Env {
             total += paid;
         }
         total
+    }
+
+    /// Adds the step's reward to the episode's return (the left agents' mean, or every agent's
+    /// when none plays on the left) and, when the episode ended, records its result.
+    fn record_lesson_step(&mut self, score_diff: i32) {
+        let (left, n) = (self.controller_span(Side::Left).1, self.state.controllers.len());
+        let rewards = if left > 0 { &self.state.rewards[..left] } else { &self.state.rewards[..] };
+        if n > 0 {
+            self.state.lessons.add_reward(rewards.iter().sum::<f32>() / rewards.len() as f32);
+        }
+        if self.state.done {
+            self.state.lessons.finish_episode(score_diff);
+        }
     }
 
     /// Runs the hooks after a step: adds their rewards and returns (end, reward paid, errors
@@ -723,9 +796,51 @@ impl Env {
         self.state.done
     }
 
-    /// The scenario.
+    /// The scenario played (with a curriculum: the current lesson's).
     pub fn scenario(&self) -> &Scenario {
         &self.scenario
+    }
+
+    /// The curriculum the env plays, if its scenario has one.
+    pub fn curriculum(&self) -> Option<&Curriculum> {
+        self.curriculum.as_deref()
+    }
+
+    /// The lesson played: its 0-based index and name; `None` without a curriculum. Lessons
+    /// change at [`Env::reset`], when the lesson's criterion holds.
+    pub fn lesson(&self) -> Option<(usize, &str)> {
+        let c = self.curriculum.as_ref()?;
+        let i = self.state.lessons.lesson;
+        Some((i, c.lessons[i].name.as_str()))
+    }
+
+    /// Where the env stands in its curriculum; `None` without one.
+    pub fn curriculum_progress(&self) -> Option<CurriculumProgress> {
+        let c = self.curriculum.as_ref()?;
+        let p = &self.state.lessons;
+        let window = c.lessons[p.lesson].advance.as_ref().map_or(0, |a| p.window(a.window as usize).count());
+        Some(CurriculumProgress { lesson: p.lesson, lessons: c.lessons.len(), episodes: p.episodes, window })
+    }
+
+    /// The mean of `metric` over the current lesson's window (its criterion's, or every
+    /// recorded episode when it has none); `None` without a curriculum or before any episode
+    /// of the lesson finished.
+    pub fn lesson_metric(&self, metric: Metric) -> Option<f64> {
+        let c = self.curriculum.as_ref()?;
+        let p = &self.state.lessons;
+        let window = c.lessons[p.lesson].advance.as_ref().map_or(usize::MAX, |a| a.window as usize);
+        let results = p.window(window);
+        let n = results.clone().count();
+        (n > 0).then(|| {
+            results
+                .map(|r| match metric {
+                    Metric::MeanReward => f64::from(r.reward),
+                    Metric::MeanScore => f64::from(r.score_diff),
+                    Metric::SuccessRate => f64::from(u8::from(r.score_diff > 0)),
+                })
+                .sum::<f64>()
+                / n as f64
+        })
     }
 
     /// The configuration.
@@ -747,4 +862,61 @@ impl Env {
     pub fn game_mut(&mut self) -> &mut Match {
         &mut self.state.game
     }
+}
+
+/// Agents a side for `scenario` under `config` (`control_all_players` turns one agent into one
+/// per controllable player).
+///
+/// # Errors
+/// [`EngineError::InvalidConfig`] when more agents are asked for than a side has controllable
+/// players.
+fn agents_for(scenario: &Scenario, config: &EnvConfig) -> Result<[usize; 2], EngineError> {
+    let controllable = scenario.controllable_players();
+    let mut agents = [config.left_agents, config.right_agents];
+    for side in 0..2 {
+        if scenario.control_all_players && agents[side] == 1 {
+            agents[side] = controllable[side];
+        }
+        if agents[side] > controllable[side] {
+            return Err(EngineError::InvalidConfig {
+                reason: format!(
+                    "{} agents asked for the {} team, which has {} controllable players",
+                    agents[side],
+                    Side::from_index(side).name(),
+                    controllable[side]
+                ),
+            });
+        }
+    }
+    Ok(agents)
+}
+
+/// Checks that every lesson of `c` gives the same agents under `config` and pays rewards the
+/// env can pay, so that moving between lessons never fails; returns the agents a side.
+///
+/// # Errors
+/// [`EngineError::InvalidConfig`] naming the first lesson that differs from the first lesson.
+fn lesson_agents(c: &Curriculum, config: &EnvConfig, hooks: bool) -> Result<[usize; 2], EngineError> {
+    let first = &c.lessons[0];
+    let agents = agents_for(&first.scenario, config)
+        .map_err(|e| EngineError::InvalidConfig { reason: format!("lesson `{}`: {e}", first.name) })?;
+    for l in &c.lessons {
+        let theirs = agents_for(&l.scenario, config)
+            .map_err(|e| EngineError::InvalidConfig { reason: format!("lesson `{}`: {e}", l.name) })?;
+        if theirs != agents {
+            return Err(EngineError::InvalidConfig {
+                reason: format!(
+                    "lesson `{}` gives {} left and {} right controllers, lesson `{}` {} and {}; every lesson \
+                     must give the same",
+                    l.name, theirs[0], theirs[1], first.name, agents[0], agents[1]
+                ),
+            });
+        }
+        RewardPlan::new(&l.scenario, config, hooks)
+            .map_err(|e| EngineError::InvalidConfig { reason: format!("lesson `{}`: {e}", l.name) })?;
+        if let Some(bytes) = &l.scenario.start_state {
+            snapshot::start_match(&l.scenario, bytes)?;
+        }
+    }
+    Ok(agents)
 }

@@ -48,6 +48,8 @@ pub(crate) struct EnvState {
     /// The hooks failed at the last reset; the next step reports it (transient: not saved).
     #[serde(skip)]
     pub(super) hook_error: Option<EngineError>,
+    /// Progress through the curriculum (empty without one).
+    pub(super) lessons: super::lessons::LessonProgress,
 }
 
 /// A saved moment of an episode; see [`Env::snapshot`] and [`Env::restore`].
@@ -143,8 +145,13 @@ impl Env {
     /// Identifies the scenario and configuration a snapshot belongs to (computed once, in
     /// [`Env::with_config`]).
     pub(crate) fn compute_fingerprint(&self) -> u64 {
-        let bytes = postcard::to_allocvec(&(&self.scenario, &self.config)).unwrap_or_default();
-        fnv(&bytes)
+        // With a curriculum, the lessons (not the lesson played) identify the env: a snapshot
+        // taken in one lesson restores in another.
+        let bytes = match &self.curriculum {
+            Some(c) => postcard::to_allocvec(&(&**c, &self.config)),
+            None => postcard::to_allocvec(&(&self.scenario, &self.config)),
+        };
+        fnv(&bytes.unwrap_or_default())
     }
 
     /// Saves the whole dynamic state of the episode.
@@ -172,6 +179,15 @@ impl Env {
         }
         if let Some(hooks) = self.hooks.as_mut() {
             hooks.load(&snapshot.hooks)?;
+        }
+        let saved = snapshot.state.lessons.lesson;
+        if saved != self.state.lessons.lesson
+            && let Some(lesson) = self.curriculum.as_ref().and_then(|c| c.lessons.get(saved))
+        {
+            // The snapshot plays another lesson: switch to it first (lessons were checked
+            // against the env when it was built, so this cannot fail), then take its state.
+            let scenario = lesson.scenario.clone();
+            self.switch_to(scenario)?;
         }
         self.state.clone_from(&snapshot.state);
         Ok(())

@@ -9,6 +9,7 @@
 
 mod behaviour;
 mod condition;
+mod curriculum;
 mod event_reward;
 mod placement;
 mod random;
@@ -18,6 +19,7 @@ use serde::{Deserialize, Serialize};
 
 pub use behaviour::{Behaviour, PassKind, Stage};
 pub use condition::{Comparison, Condition, Owner, Target};
+pub use curriculum::{Criterion, Curriculum, EpisodeResult, Lesson, Metric, Threshold};
 pub use event_reward::{EventAtom, EventKind, EventReward, EventStep, EventTeam, MAX_EVENT_GROUP, MAX_EVENT_SEQUENCE};
 pub use placement::{Body, MAX_PLACEMENT_TRIES, Placement, Require};
 pub use random::{Distribution, PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Region, Sample, Spot};
@@ -101,6 +103,11 @@ pub struct Scenario {
     /// saved match must have as many players a side as the teams here (`.tl`: `start from "file"`).
     #[serde(default, skip_serializing_if = "Option::is_none", with = "start_state_hex")]
     pub start_state: Option<Vec<u8>>,
+    /// Lessons an env plays in order instead of this scenario, moving on when a lesson's
+    /// criterion holds (`.tl`: `curriculum { … }`). The fields above are then the base the
+    /// lessons were compiled from; an env plays `lessons[0]` first.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub curriculum: Option<Box<Curriculum>>,
 }
 
 /// `start_state` as a hex string in JSON.
@@ -191,6 +198,7 @@ impl Default for Scenario {
             rewards: Vec::new(),
             end_when: Vec::new(),
             start_state: None,
+            curriculum: None,
         }
     }
 }
@@ -308,6 +316,9 @@ impl Scenario {
                     .map_err(|e| EngineError::InvalidScenario { reason: format!("end when: {e}") })?,
                 _ => {}
             }
+        }
+        if let Some(c) = &self.curriculum {
+            c.check().map_err(|reason| EngineError::InvalidScenario { reason })?;
         }
         Ok(())
     }

@@ -89,3 +89,30 @@ impl RandomPolicy {
         set.actions()[self.index(set.len())]
     }
 }
+
+/// A three-lesson curriculum over stdlib drills: `close` (academy_empty_goal_close), `far`
+/// (academy_empty_goal), `keeper` (academy_run_to_score_with_keeper); each lesson advances once
+/// `window` episodes have `success_rate >= threshold`.
+pub fn curriculum(window: u32, threshold: f64) -> Scenario {
+    use touchline_engine::scenario::{Criterion, Curriculum, Lesson, Metric, Threshold};
+    let advance = Criterion {
+        window,
+        min_episodes: window,
+        thresholds: vec![Threshold { metric: Metric::SuccessRate, at_least: true, value: threshold }],
+    };
+    let lesson = |name: &str, scenario: &str| Lesson {
+        name: name.into(),
+        scenario: self::scenario(scenario),
+        advance: Some(advance.clone()),
+    };
+    Scenario {
+        curriculum: Some(Box::new(Curriculum {
+            lessons: vec![
+                lesson("close", "academy_empty_goal_close"),
+                lesson("far", "academy_empty_goal"),
+                lesson("keeper", "academy_run_to_score_with_keeper"),
+            ],
+        })),
+        ..scenario("academy_empty_goal_close")
+    }
+}

@@ -221,6 +221,7 @@ impl CliError {
             | CliError::Read { .. }
             | CliError::Replay { .. }
             | CliError::Build(_)
+            | CliError::NoCurriculum { .. }
             | CliError::Watch(_) => 2,
             CliError::Check { .. }
             | CliError::Unformatted { .. }

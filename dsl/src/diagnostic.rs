@@ -352,7 +352,9 @@ impl Diagnostics {
     /// Drops repeats (same code, message, file and labels), keeping the first: a parent
     /// resolved for several children reports each of its mistakes once.
     pub fn dedup(&mut self) {
-        let mut seen: Vec<(Code, String, String, Vec<(usize, usize)>)> = Vec::new();
+        // Code, message, file and label spans identify a diagnostic.
+        type Key = (Code, String, String, Vec<(usize, usize)>);
+        let mut seen: Vec<Key> = Vec::new();
         self.items.retain(|d| {
             let key = (
                 d.code,

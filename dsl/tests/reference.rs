@@ -42,22 +42,32 @@ fn expected_codes(text: &str) -> Vec<String> {
         .collect()
 }
 
-#[test]
-fn every_tl_example_compiles() {
-    let examples: Vec<Block> = blocks(README).into_iter().filter(|b| b.info == "tl").collect();
-    assert!(examples.len() >= 12, "only {} examples", examples.len());
-    for b in examples {
-        let origin = format!("tests/fixtures/reference/README.md:{}", b.line);
+/// Compiles every ` ```tl ` block of `markdown` (named `name` in messages) without a diagnostic;
+/// returns how many there were.
+fn compile_examples(markdown: &str, name: &str) -> usize {
+    let examples: Vec<Block> = blocks(markdown).into_iter().filter(|b| b.info == "tl").collect();
+    for b in &examples {
+        let origin = format!("tests/fixtures/reference/{name}:{}", b.line);
         match compile(&b.text, &origin) {
-            Ok(c) => assert!(
-                c.warnings.items.is_empty(),
-                "README.md line {}: warnings\n{}",
-                b.line,
-                c.warnings.render_plain()
-            ),
-            Err(d) => panic!("README.md line {}: the example does not compile\n{}", b.line, d.render_plain()),
+            Ok(c) => {
+                assert!(c.warnings.items.is_empty(), "{name} line {}: warnings\n{}", b.line, c.warnings.render_plain())
+            }
+            Err(d) => panic!("{name} line {}: the example does not compile\n{}", b.line, d.render_plain()),
         }
     }
+    examples.len()
+}
+
+#[test]
+fn every_tl_example_compiles() {
+    let n = compile_examples(README, "README.md");
+    assert!(n >= 12, "only {n} examples");
+}
+
+#[test]
+fn the_project_readme_examples_compile() {
+    let n = compile_examples(include_str!("../../README.md"), "../README.md");
+    assert!(n >= 3, "only {n} examples");
 }
 
 #[test]

@@ -4,7 +4,7 @@
 
 mod common;
 
-use touchline_engine::{Action, EngineError, Env, EnvConfig, GameMode};
+use touchline_engine::{Action, EngineError, Env, EnvConfig, GameMode, Side};
 
 #[test]
 fn steps_left_and_the_time_limit_follow_grf() {
@@ -190,6 +190,32 @@ fn every_controllable_player_has_a_fixed_controller_when_all_are_controlled() {
             assert_eq!(o.active, i as i32);
         }
     }
+}
+
+#[test]
+fn a_player_control_switches_away_from_goes_back_to_the_ai() {
+    // One left agent in a full match: control follows the ball (GRF), and the player it leaves is
+    // played by the built-in AI again instead of running on with the agent's last input.
+    let mut env = Env::new(common::scenario("11_vs_11_stochastic"), 0).unwrap();
+    let mut switches = 0;
+    for _ in 0..600 {
+        let before = env.controlled_players()[0];
+        env.step(&[Action::TopRight]).unwrap();
+        let now = env.controlled_players()[0];
+        if now != before {
+            switches += 1;
+            // The next step releases the player left behind (and drives `now`).
+            env.step(&[Action::TopRight]).unwrap();
+            let game = env.game();
+            for i in (0..game.team(Side::Left).len()).filter(|&i| i != now) {
+                assert!(!game.is_agent_driven(Side::Left, i), "left player {i} still follows the agent");
+            }
+        }
+        if env.is_done() {
+            break;
+        }
+    }
+    assert!(switches > 0, "control never switched");
 }
 
 #[test]

@@ -201,21 +201,6 @@ impl Match {
         self.behaviours.get(g).is_some_and(|b| b.scripted())
     }
 
-    /// Hands the behaviour players of `side` that no controller drives any more (`controlled`:
-    /// the team's controlled players) back to their behaviours. Players without a behaviour keep
-    /// the engine's long-standing handling.
-    pub(crate) fn release_behaviour_players(&mut self, side: Side, controlled: &[usize]) {
-        if self.behaviours.is_empty() {
-            return;
-        }
-        for g in self.ranges[side.index()].clone() {
-            let index = g - self.ranges[side.index()].start;
-            if self.agent_driven[g] && !self.behaviours[g].stages.is_empty() && !controlled.contains(&index) {
-                self.agent_driven[g] = false;
-            }
-        }
-    }
-
     /// The behaviour stage `side`'s player `index` is playing (0-based) and whether it has
     /// finished by itself; `None` for a player of the built-in AI.
     pub fn behaviour_stage(&self, side: Side, index: usize) -> Option<(usize, bool)> {

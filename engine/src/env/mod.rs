@@ -491,6 +491,11 @@ impl Env {
         }
         self.state.fresh = false;
         self.state.game.clear_events();
+        // A player control switched away from goes back to the AI (or his behaviour).
+        for side in Side::BOTH {
+            let (start, len) = self.controller_span(side);
+            self.state.game.release_uncontrolled(side, &self.state.controlled[start..start + len]);
+        }
         for (i, &action) in actions.iter().enumerate() {
             let action = self.anti_stalling(i, action);
             self.taken[i] = action;
@@ -574,17 +579,12 @@ impl Env {
         Ok(StepOutcome { terminated, truncated })
     }
 
-    /// Before the ticks of a step: hands behaviour players no controller drives any more back to
-    /// their behaviours, and asks the hooks for each scripted player's action, applied as an
+    /// Before the ticks of a step: asks the hooks for each scripted player's action, applied as an
     /// agent's (his own frame, sticky state of his own). A hook error ends the episode and fails
     /// the step.
     fn step_behaviours(&mut self) -> Result<(), EngineError> {
         if self.state.game.behaviours.is_empty() {
             return Ok(());
-        }
-        for side in Side::BOTH {
-            let (start, len) = self.controller_span(side);
-            self.state.game.release_behaviour_players(side, &self.state.controlled[start..start + len]);
         }
         for g in 0..self.state.game.players().len() {
             let Some((side, index, path)) = self.state.game.scripted_player(g) else { continue };

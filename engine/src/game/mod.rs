@@ -327,6 +327,11 @@ impl Match {
         self.difficulty
     }
 
+    /// Whether an agent drives `side`'s player `index` (index in team) this step.
+    pub fn is_agent_driven(&self, side: Side, index: usize) -> bool {
+        self.agent_driven[self.global_index(side, index)]
+    }
+
     /// Gives `side`'s player `index` to an agent (`Some(input)`) or back to the built-in AI (`None`).
     pub fn set_agent_input(&mut self, side: Side, index: usize, input: Option<PlayerInput>) {
         let g = self.global_index(side, index);
@@ -336,6 +341,19 @@ impl Match {
                 self.agent_driven[g] = true;
             }
             None => self.agent_driven[g] = false,
+        }
+    }
+
+    /// Hands every player of `side` that an agent drove but no controller drives now
+    /// (`controlled`: the team's controlled players, index in team) back to the built-in AI or to
+    /// his behaviour, as GRF does when control switches; a kick he buffered is forgotten.
+    pub(crate) fn release_uncontrolled(&mut self, side: Side, controlled: &[usize]) {
+        let start = self.ranges[side.index()].start;
+        for g in self.ranges[side.index()].clone() {
+            if self.agent_driven[g] && !controlled.contains(&(g - start)) {
+                self.agent_driven[g] = false;
+                self.players[g].pending_kick = None;
+            }
         }
     }
 

@@ -513,70 +513,15 @@ fn require(lhs: &Expr, at_least: bool, rhs: &Expr, s: &Scenario, r: &mut Reader<
 
 /// `ball`, `left[i]`, `right[i]`, `left.ROLE` (the only player of that role).
 fn body(e: &Expr, s: &Scenario, r: &mut Reader<'_>) -> Option<Body> {
-    let team_of = |side: &str| match side {
-        "left" => Some((&s.left_team, true)),
-        "right" => Some((&s.right_team, false)),
-        _ => None,
-    };
-    let make = |left: bool, i: usize| if left { Body::Left(i) } else { Body::Right(i) };
-    let usage = "name the ball, `left[i]`, `right[i]` (0-based, in the team's order) or `left.ROLE`";
     match &e.kind {
         ExprKind::Path { head, field: None } if head.value == "ball" => Some(Body::Ball),
-        ExprKind::Index { name, args } if team_of(&name.value).is_some() => {
-            let (team, left) = team_of(&name.value)?;
-            let [arg] = args.as_slice() else {
-                r.error_help(
-                    Code::Arguments,
-                    "a player index is one number",
-                    e.span,
-                    "not one index",
-                    format!("write `{}[i]`, i counting from 0 in the team's order", name.value),
-                );
-                return None;
-            };
-            let i = r.steps(&arg.value, "a player index", 0)? as usize;
-            if i >= team.len() {
-                r.error_help(
-                    Code::UnknownPlayer,
-                    format!("{} has {} players; there is no {}[{i}]", name.value, team.len(), name.value),
-                    e.span,
-                    "no such player",
-                    "indices are 0-based, in the order the team lists its players",
-                );
-                return None;
-            }
-            Some(make(left, i))
-        }
-        ExprKind::Path { head, field: Some(role) } if team_of(&head.value).is_some() => {
-            let (team, left) = team_of(&head.value)?;
-            let matching: Vec<usize> =
-                team.iter().enumerate().filter(|(_, p)| p.role.name() == role.value).map(|(i, _)| i).collect();
-            match matching.as_slice() {
-                [i] => Some(make(left, *i)),
-                [] => {
-                    r.error_help(
-                        Code::UnknownPlayer,
-                        format!("{} has no {}", head.value, role.value),
-                        e.span,
-                        "no such player",
-                        usage,
-                    );
-                    None
-                }
-                several => {
-                    r.error_help(
-                        Code::UnknownPlayer,
-                        format!("{} has {} players with role {}", head.value, several.len(), role.value),
-                        e.span,
-                        "ambiguous",
-                        format!(
-                            "name one by index: {}",
-                            several.iter().map(|i| format!("{}[{i}]", head.value)).collect::<Vec<_>>().join(", ")
-                        ),
-                    );
-                    None
-                }
-            }
+        ExprKind::Index { name, .. } | ExprKind::Path { head: name, field: Some(_) }
+            if matches!(name.value.as_str(), "left" | "right") =>
+        {
+            condition::player(e, s, r).map(|(side, i)| match side {
+                touchline_engine::Side::Left => Body::Left(i),
+                touchline_engine::Side::Right => Body::Right(i),
+            })
         }
         _ => {
             r.error_help(
@@ -584,7 +529,7 @@ fn body(e: &Expr, s: &Scenario, r: &mut Reader<'_>) -> Option<Body> {
                 format!("`{}` is not a player or the ball", e.describe()),
                 e.span,
                 "here",
-                usage,
+                "name the ball, `left[i]`, `right[i]` (0-based, in the team's order) or `left.ROLE`",
             );
             None
         }

@@ -347,17 +347,7 @@ impl Env {
         };
         self.state.hook_error = None;
         if let Some(hooks) = self.hooks.as_mut() {
-            let view = HookView {
-                game: &self.state.game,
-                observations: &self.state.observations,
-                left_controllers: self.state.controllers.iter().filter(|c| c.side == Side::Left).count(),
-                actions: &[],
-                rewards: &self.state.rewards,
-                steps: 0,
-                steps_left: self.state.info.steps_left,
-                episode,
-                seed: self.state.seed,
-            };
+            let view = hook_view(&self.state, &self.scenario, &[]);
             self.state.hook_error = hooks.reset(&view).err();
         }
     }
@@ -646,4 +636,19 @@ fn lesson_agents(c: &Curriculum, config: &EnvConfig, hooks: bool) -> Result<[usi
         }
     }
     Ok(agents)
+}
+
+/// What the hooks see of the env after its last reset (`actions` empty) or step.
+fn hook_view<'a>(state: &'a EnvState, scenario: &Scenario, actions: &'a [Action]) -> HookView<'a> {
+    HookView {
+        game: &state.game,
+        observations: &state.observations,
+        left_controllers: state.controllers.iter().filter(|c| c.side == Side::Left).count(),
+        actions,
+        rewards: &state.rewards,
+        steps: state.steps,
+        steps_left: (scenario.game_duration + 1).saturating_sub(state.steps),
+        episode: state.episode,
+        seed: state.seed,
+    }
 }

@@ -145,17 +145,7 @@ impl Env {
                 // cannot bring one in (fingerprints differ).
                 continue;
             };
-            let view = HookView {
-                game: &self.state.game,
-                observations: &self.state.observations,
-                left_controllers: self.state.controllers.iter().filter(|c| c.side == Side::Left).count(),
-                actions: &self.taken,
-                rewards: &self.state.rewards,
-                steps: self.state.steps,
-                steps_left: (self.scenario.game_duration + 1).saturating_sub(self.state.steps),
-                episode: self.state.episode,
-                seed: self.state.seed,
-            };
+            let view = hook_view(&self.state, &self.scenario, &self.taken);
             let action = match hooks.behaviour_action(&view, side, index, path) {
                 Ok(action) => action,
                 Err(e) => {
@@ -212,17 +202,7 @@ impl Env {
     fn run_hooks(&mut self) -> Result<(bool, f32, u32), EngineError> {
         let Some(hooks) = self.hooks.as_mut() else { return Ok((false, 0.0, 0)) };
         self.hook_rewards.fill(0.0);
-        let view = HookView {
-            game: &self.state.game,
-            observations: &self.state.observations,
-            left_controllers: self.state.controllers.iter().filter(|c| c.side == Side::Left).count(),
-            actions: &self.taken,
-            rewards: &self.state.rewards,
-            steps: self.state.steps,
-            steps_left: (self.scenario.game_duration + 1).saturating_sub(self.state.steps),
-            episode: self.state.episode,
-            seed: self.state.seed,
-        };
+        let view = hook_view(&self.state, &self.scenario, &self.taken);
         match hooks.step(&view, &mut self.hook_rewards) {
             Ok(outcome) => {
                 let mut total = 0.0;

@@ -150,19 +150,24 @@ fn byte_offset(text: &str, line: usize, column: usize) -> usize {
     if line == 0 {
         return 0;
     }
-    let mut start = 0;
-    for _ in 1..line {
-        match text[start..].find('\n') {
-            Some(i) => start += i + 1,
-            None => return text.len(),
-        }
-    }
-    let line_len = text[start..].find('\n').unwrap_or(text.len() - start);
-    let mut offset = start + column.saturating_sub(1).min(line_len);
+    let Some((start, line_text)) = line_at(text, line) else { return text.len() };
+    let mut offset = start + column.saturating_sub(1).min(line_text.len());
     while !text.is_char_boundary(offset) {
         offset -= 1;
     }
     offset
+}
+
+/// Where 1-based `line` of `text` starts (a byte offset) and its text without the newline; `None`
+/// past the last line. Shared by the JSON and the script diagnostics, whose positions are lines and
+/// columns.
+pub(crate) fn line_at(text: &str, line: usize) -> Option<(usize, &str)> {
+    let mut start = 0;
+    for _ in 1..line {
+        start += text[start..].find('\n')? + 1;
+    }
+    let rest = &text[start..];
+    Some((start, &rest[..rest.find('\n').unwrap_or(rest.len())]))
 }
 
 /// The span of the JSON token that ends at byte `end` (serde_json reports shape errors at a token's

@@ -121,15 +121,7 @@ pub(crate) fn offset(text: &str, line: usize, column: usize) -> usize {
     if line == 0 {
         return 0;
     }
-    let mut start = 0;
-    for _ in 1..line {
-        match text[start..].find('\n') {
-            Some(i) => start += i + 1,
-            None => return text.len(),
-        }
-    }
-    let rest = &text[start..];
-    let line_text = &rest[..rest.find('\n').unwrap_or(rest.len())];
+    let Some((start, line_text)) = crate::diag::line_at(text, line) else { return text.len() };
     start + line_text.char_indices().nth(column.saturating_sub(1)).map_or(line_text.len(), |(i, _)| i)
 }
 

@@ -35,6 +35,12 @@ impl MatchRng {
         self.unit() < p
     }
 
+    /// Whether the match is stochastic: [`MatchRng::noise`] is non-zero and kicks vary.
+    #[inline]
+    pub(crate) fn noisy(&self) -> bool {
+        self.noise_scale != 0.0
+    }
+
     /// Symmetric noise in [-amplitude, amplitude]; zero in deterministic mode.
     #[inline]
     pub(crate) fn noise(&mut self, amplitude: f32) -> f32 {

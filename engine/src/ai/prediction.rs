@@ -5,7 +5,7 @@ use glam::{Vec2, Vec3};
 use super::{Analysis, Difficulty, MatchView};
 use crate::geometry::pitch::{BALL_RADIUS, GRAVITY};
 use crate::geometry::{Side, TeamFrame};
-use crate::physics::{BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_VISCOUS};
+use crate::physics::{BALL_DRAG, BOUNCE_RESTITUTION, Ball, rolled_speed};
 
 /// Number of predicted samples.
 pub const SAMPLES: usize = 20;
@@ -32,8 +32,8 @@ impl BallPath {
                 if p.z <= BALL_RADIUS + 0.01 && v.z.abs() < 0.8 {
                     let h = v.truncate();
                     let s = h.length();
-                    let loss = (ROLL_DECELERATION + ROLL_VISCOUS * s) * dt;
-                    let h = if loss >= s { Vec2::ZERO } else { h * ((s - loss) / s) };
+                    let kept = rolled_speed(s, dt);
+                    let h = if kept <= 0.0 { Vec2::ZERO } else { h * (kept / s) };
                     v = h.extend(0.0);
                     p.z = BALL_RADIUS;
                 } else {

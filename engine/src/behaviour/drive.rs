@@ -194,13 +194,6 @@ impl Match {
         self.behaviours.get(g).map_or_else(StickyState::default, |b| b.sticky)
     }
 
-    /// Whether `g` is a scripted player this tick (a kick he asks for without the ball is
-    /// buffered, as an agent's).
-    #[inline]
-    pub(crate) fn is_scripted(&self, g: usize) -> bool {
-        self.behaviours.get(g).is_some_and(|b| b.scripted())
-    }
-
     /// The behaviour stage `side`'s player `index` is playing (0-based) and whether it has
     /// finished by itself; `None` for a player of the built-in AI.
     pub fn behaviour_stage(&self, side: Side, index: usize) -> Option<(usize, bool)> {

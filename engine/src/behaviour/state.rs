@@ -62,12 +62,6 @@ impl PlayerBehaviour {
         }
     }
 
-    /// The current stage is a script's.
-    #[inline]
-    pub(crate) fn scripted(&self) -> bool {
-        matches!(self.current(), Some(Behaviour::Script { .. }))
-    }
-
     /// Moves on to the next stage, if there is one, from position `at` (m). Returns whether it
     /// moved.
     pub(crate) fn advance(&mut self, at: Vec2) -> bool {

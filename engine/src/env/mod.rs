@@ -31,8 +31,6 @@ use lessons::LessonProgress;
 
 /// Ticks of play per env step: 10 × 10 ms = 0.1 s (GRF `physics_steps_per_frame`, grf.md §7.1).
 pub const TICKS_PER_STEP: u32 = 10;
-/// Gauge of a button pressed for one step (ms): buttons auto-release after each step (grf.md §5.3).
-const ONE_STEP_GAUGE_MS: f32 = 100.0;
 /// Most ticks one step may simulate (play plus dead time), a guard against a stuck restart.
 const MAX_TICKS_PER_STEP: u32 = 2_000;
 
@@ -135,14 +133,12 @@ fn sticky_input(sticky: &StickyState, press: Press, player: &crate::player::Play
         WALK_SPEED
     };
     let aim = if dir == Vec2::ZERO { player.facing } else { dir };
-    // GRF's gauge: power = clamp((gauge - 60 ms) / 940 ms, 0, 1) (grf.md §5.4).
-    let power = ((ONE_STEP_GAUGE_MS - 60.0) / 940.0).clamp(0.0, 1.0);
     PlayerInput {
         velocity: dir * speed,
         look: player.facing,
         dribble: sticky.dribble,
         kick: match press {
-            Press::Kick(kind) => Some(Kick { kind, target: KickTarget::Direction(aim), height: 0.6, power }),
+            Press::Kick(kind, power) => Some(Kick { kind, target: KickTarget::Direction(aim), height: 0.6, power }),
             _ => None,
         },
         slide: press == Press::Slide,

@@ -155,7 +155,7 @@ impl Env {
             };
             let global = if side == Side::Right { action.rotated() } else { action };
             let mut sticky = self.state.game.script_sticky(g);
-            let press = sticky.apply(global);
+            let press = sticky.apply(global, self.state.game.owner() == Some((side, index)));
             let input = sticky_input(&sticky, press, &self.state.game.players()[g]);
             self.state.game.set_script_input(g, input, sticky);
         }
@@ -248,9 +248,10 @@ impl Env {
     fn apply_action(&mut self, i: usize, action: Action) {
         let side = self.state.controllers[i].side;
         let global = if side == Side::Right { action.rotated() } else { action };
-        let press = self.state.controllers[i].sticky.apply(global);
-        let sticky = self.state.controllers[i].sticky;
         let index = self.state.controlled[i];
+        let on_ball = self.state.game.owner() == Some((side, index));
+        let press = self.state.controllers[i].sticky.apply(global, on_ball);
+        let sticky = self.state.controllers[i].sticky;
         if sticky.builtin {
             self.state.game.set_agent_input(side, index, None);
             return;

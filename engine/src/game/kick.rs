@@ -1,13 +1,13 @@
 //! Putting the ball in motion: passes (ground, driven, lofted) and shots, with aim error that
-//! grows as skill and difficulty fall. Also the auto-targeting of agents' passes: the best
-//! team-mate in the movement direction (grf.md §5.4).
+//! grows as skill and difficulty fall, and the choice of receiver for an agent's pass: GRF's rating
+//! of every team-mate by distance to the aimed point and angle off the input direction.
 
 use glam::{Vec2, Vec3};
 
 use super::input::{Kick, KickKind};
 use crate::geometry::pitch::{BALL_RADIUS, GOAL_HALF_WIDTH, GRAVITY, HALF_LENGTH};
-use crate::physics::{BALL_DRAG, Ball, ROLL_DECELERATION, ROLL_VISCOUS};
-use crate::player::{Player, nearest_distance};
+use crate::physics::{BALL_DRAG, Ball, ROLL_DECELERATION, ROLL_QUADRATIC};
+use crate::player::{DRIBBLE_SPEED, Player, SPRINT_SPEED};
 use crate::rng::MatchRng;
 
 /// Speed (m/s) a ground pass should still have when it reaches the receiver.
@@ -15,11 +15,11 @@ const ARRIVAL_SPEED: f32 = 5.0;
 /// Fastest ground pass (m/s).
 const MAX_GROUND_PASS: f32 = 26.0;
 
-/// Distance (m) a rolling ball covers while slowing from `v0` to `v1` under
-/// a = -(c0 + c1·v): s = (v0 - v1)/c1 - c0/c1² · ln((c0 + c1·v0)/(c0 + c1·v1)).
+/// Distance (m) a rolling ball covers while slowing from `v0` to `v1` under GRF's grass friction
+/// a = -(c0 + c2·v²): s = ln((c0 + c2·v0²) / (c0 + c2·v1²)) / (2·c2).
 fn rolling_distance(v0: f32, v1: f32) -> f32 {
-    let (c0, c1) = (ROLL_DECELERATION, ROLL_VISCOUS);
-    (v0 - v1) / c1 - c0 / (c1 * c1) * libm::logf((c0 + c1 * v0) / (c0 + c1 * v1))
+    let (c0, c2) = (ROLL_DECELERATION, ROLL_QUADRATIC);
+    libm::logf((c0 + c2 * v0 * v0) / (c0 + c2 * v1 * v1)) / (2.0 * c2)
 }
 
 /// Initial speed of a ground pass that arrives `distance` m away at [`ARRIVAL_SPEED`].
@@ -82,19 +82,49 @@ pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2
             let speed = lofted_speed(distance * 0.88, c, s).min(30.0);
             Vec3::new(dir.x * c * speed, dir.y * c * speed, s * speed)
         }
-        KickKind::Shot => {
-            let speed = (22.0 + 10.0 * kick.power) * (0.85 + 0.15 * accuracy);
-            // Average horizontal speed over the flight, slowed by drag.
-            let mean = speed * (1.0 - (BALL_DRAG * 0.5 * distance).min(0.5));
-            let t = distance / mean;
-            let vz = ((kick.height - BALL_RADIUS) / t + 0.5 * GRAVITY * t).clamp(0.0, 12.0);
-            let horizontal = (speed * speed - vz * vz).max(25.0).sqrt();
-            (dir * horizontal).extend(vz)
-        }
+        KickKind::Shot => shot_velocity(kicker, dir, distance, kick, accuracy, rng),
     };
     ball.velocity = velocity;
     ball.position.z = ball.position.z.max(BALL_RADIUS);
     ball.spin = Vec3::ZERO;
+}
+
+/// A shot's velocity: GRF's blend of a best-case shot (the aimed direction, at the power asked
+/// for) and a worst-case one (dragged towards the shooter's run, with random error, lift and lost
+/// power), weighted by w = U^(0.7·skill). How much worse the worst case is grows with the shot's
+/// difficulty: hit across the body, or at a speed far from a dribble's (GRF 2.10's shot model).
+/// In a deterministic match w = 0: every shot is the best case.
+fn shot_velocity(kicker: &Player, dir: Vec2, distance: f32, kick: &Kick, accuracy: f32, rng: &mut MatchRng) -> Vec3 {
+    // 26–36 m/s from the button's power, a little less for weaker shooters.
+    let speed = (26.0 + 10.0 * kick.power.clamp(0.0, 1.0).sqrt()) * (0.85 + 0.15 * accuracy);
+    // The best case is struck low, GRF's 0.05 of lift, whatever the range: a shot from far dips,
+    // bounces and rolls out its pace on the grass rather than looping in. Close in, a shot aimed
+    // higher (a chip over a keeper, `kick.height`) gets the lift to reach it.
+    let t = distance / speed;
+    let chip = ((kick.height - BALL_RADIUS) / t + 0.5 * GRAVITY * t).clamp(0.0, 12.0);
+    let vz = if distance < 20.0 { chip.min(0.2 * speed) } else { 0.05 * speed };
+    let horizontal = (speed * speed - vz * vz).sqrt();
+    let best = (dir * horizontal).extend(vz);
+    if !rng.noisy() {
+        return best;
+    }
+    let across = 0.5 * (kicker.facing.dot(dir) + 1.0);
+    let run = kicker.velocity.length();
+    let pace = 1.0 - 0.4 * ((run - DRIBBLE_SPEED).abs() / SPRINT_SPEED).min(1.0);
+    let difficulty = (1.0 - (0.4 + 0.6 * across.powf(0.8)) * pace).clamp(0.0, 1.0);
+    let moving = if run > 0.5 { kicker.velocity / run } else { dir };
+    let lagged = dir.lerp(moving, 0.8 * difficulty);
+    let worst_dir = Vec3::new(
+        lagged.x + rng.noise(0.5 * difficulty),
+        lagged.y + rng.noise(0.5 * difficulty),
+        0.7 * difficulty.powf(0.7) + rng.noise(0.5 * difficulty),
+    )
+    .normalize_or(dir.extend(0.0));
+    let worst = worst_dir * speed * (1.0 - 0.5 * difficulty.powf(0.7));
+    let w = rng.unit().powf(0.7 * accuracy.max(0.05));
+    let mut v = best.lerp(worst, w);
+    v.z = v.z.max(0.0);
+    v
 }
 
 /// The shot's aim point: the goal line of the team `attack_sign` attacks, towards the corner
@@ -116,74 +146,42 @@ pub(crate) fn shot_target(attack_sign: f32, keeper_y: Option<f32>, shooter_y: f3
     Vec2::new(attack_sign * HALF_LENGTH, y)
 }
 
-/// Preferred pass length (m) per kind, for choosing a receiver.
-fn preferred_distance(kind: KickKind) -> (f32, f32) {
-    match kind {
-        KickKind::ShortPass => (4.0, 22.0),
-        KickKind::LongPass => (15.0, 45.0),
-        KickKind::HighPass => (18.0, 60.0),
-        KickKind::Shot => (0.0, 0.0),
-    }
-}
-
-/// The best team-mate to receive a pass of `kind` played in `direction` (unit, global frame) by
-/// `kicker`, and the point to aim at (leading a moving receiver). Without team-mates the ball is
-/// played into space along `direction`.
-pub(crate) fn auto_target(
-    kind: KickKind,
-    kicker: &Player,
-    mates: &[Player],
-    opponents: &[Player],
-    direction: Vec2,
-) -> Vec2 {
-    let (short, long) = preferred_distance(kind);
+/// The point an agent's pass of `kind` aims at, pressed with `power` (GRF's input power, in
+/// [0, 1]) in `direction` (unit, global frame), GRF's receiver choice (GRF 2.10's pass targeting):
+/// the manual target lies `power`·60 m (1–100 m) along the direction; every active team-mate, the
+/// keeper included, is rated by how far his predicted position lies from it,
+/// 0.8·(d/70 m)^0.8, plus the angle between him and the direction over π; the lowest total is the
+/// receiver, whatever the direction, even straight behind. An agent's pass goes fully to him. Only a
+/// player with no team-mate plays the ball into space, to the manual target. A long pass is led
+/// forward by a fifth of its length.
+pub(crate) fn pass_target(kind: KickKind, kicker: &Player, mates: &[Player], direction: Vec2, power: f32) -> Vec2 {
+    let reach = (power * 60.0).clamp(1.0, 100.0);
+    let manual = kicker.position + kicker.velocity.normalize_or_zero() * 0.2 + direction * reach;
     let mut best = None;
-    let mut best_score = f32::NEG_INFINITY;
+    let mut best_rating = f32::INFINITY;
     for mate in mates {
         if !mate.active || mate.index == kicker.index {
             continue;
         }
-        let to = mate.position - kicker.position;
-        let d = to.length();
-        if d < 1.0 {
-            continue;
-        }
-        let cos = to.dot(direction) / d;
-        if cos < 0.2 {
-            continue;
-        }
-        let length_penalty = if d < short {
-            (short - d) / short
-        } else if d > long {
-            (d - long) / long
-        } else {
-            0.0
-        };
-        let marked = nearest_distance(opponents, mate.position);
-        let score = 2.0 * cos - length_penalty + 0.05 * marked.min(8.0);
-        if score > best_score {
-            best_score = score;
-            best = Some((mate, d));
+        let d = mate.position.distance(kicker.position);
+        let lead = 0.7 * (0.3 + 0.05 * d).clamp(0.0, 1.0).powf(0.7);
+        let predicted = mate.position + mate.velocity * lead;
+        let distance_rating = 0.8 * (predicted.distance(manual) / 70.0).clamp(0.0, 1.0).powf(0.8);
+        let to = predicted - kicker.position;
+        let angle_rating =
+            if to.length_squared() > 1e-6 { direction.angle_to(to).abs() / std::f32::consts::PI } else { 0.0 };
+        let rating = distance_rating + angle_rating;
+        if rating < best_rating {
+            best_rating = rating;
+            best = Some(predicted);
         }
     }
-    match best {
-        Some((mate, d)) => {
-            let lead = match kind {
-                KickKind::ShortPass => d / 15.0,
-                KickKind::LongPass => d / 14.0 + 0.6,
-                KickKind::HighPass => d / 16.0,
-                KickKind::Shot => 0.0,
-            };
-            mate.position + mate.velocity * lead
-        }
-        None => {
-            let d = match kind {
-                KickKind::ShortPass => 15.0,
-                KickKind::LongPass => 30.0,
-                _ => 35.0,
-            };
-            kicker.position + direction * d
-        }
+    let target = best.unwrap_or(manual);
+    if kind == KickKind::LongPass {
+        let length = target.distance(kicker.position);
+        target + Vec2::new(kicker.side.attack_sign() * 0.2 * length, 0.0)
+    } else {
+        target
     }
 }
 
@@ -193,11 +191,72 @@ mod tests {
 
     #[test]
     fn ground_pass_speed_reaches_the_distance() {
-        for d in [5.0f32, 10.0, 20.0, 30.0] {
+        for d in [5.0f32, 10.0, 20.0, 25.0] {
             let v = ground_pass_speed(d);
             let s = rolling_distance(v, ARRIVAL_SPEED);
             assert!((s - d).abs() < 0.05, "{d}: {s}");
         }
+    }
+
+    fn player(side: crate::geometry::Side, index: usize, at: Vec2) -> Player {
+        let role = if index == 0 { crate::player::Role::GK } else { crate::player::Role::CB };
+        Player::new(side, index, role, at, at)
+    }
+
+    #[test]
+    fn a_pass_with_only_the_keeper_to_receive_goes_back_to_him() {
+        use crate::geometry::Side;
+        // academy_empty_goal: our CB at the centre spot facing the empty goal, our keeper behind.
+        let mates = [player(Side::Left, 0, Vec2::new(-52.0, 0.0)), player(Side::Left, 1, Vec2::ZERO)];
+        for kind in [KickKind::ShortPass, KickKind::LongPass, KickKind::HighPass] {
+            let target = pass_target(kind, &mates[1], &mates, Vec2::X, 0.13);
+            assert!(target.x < -30.0, "{kind:?} went to {target}");
+        }
+    }
+
+    #[test]
+    fn the_receiver_is_the_team_mate_nearest_the_aimed_direction() {
+        use crate::geometry::Side;
+        let mates = [
+            player(Side::Left, 0, Vec2::new(-50.0, 0.0)),
+            player(Side::Left, 1, Vec2::ZERO),
+            player(Side::Left, 2, Vec2::new(10.0, 10.0)),
+            player(Side::Left, 3, Vec2::new(10.0, -10.0)),
+        ];
+        let target = pass_target(KickKind::ShortPass, &mates[1], &mates, Vec2::new(1.0, 1.0).normalize(), 0.3);
+        assert_eq!(target, Vec2::new(10.0, 10.0));
+    }
+
+    #[test]
+    fn without_a_team_mate_a_pass_goes_power_times_60_metres_along_the_direction() {
+        use crate::geometry::Side;
+        let alone = [player(Side::Left, 1, Vec2::ZERO)];
+        let short = pass_target(KickKind::ShortPass, &alone[0], &alone, Vec2::X, 0.11);
+        assert!((short.x - 6.6).abs() < 0.01 && short.y == 0.0, "{short}");
+        // A long pass is led a fifth further forward.
+        let long = pass_target(KickKind::LongPass, &alone[0], &alone, Vec2::X, 0.129);
+        assert!((long.x - 1.2 * 7.74).abs() < 0.01, "{long}");
+    }
+
+    #[test]
+    fn deterministic_shots_are_the_best_case_and_stochastic_ones_vary() {
+        use crate::geometry::Side;
+        let shooter = player(Side::Left, 1, Vec2::new(40.0, 0.0));
+        let kick = Kick {
+            kind: KickKind::Shot,
+            target: super::super::KickTarget::Direction(Vec2::X),
+            height: 0.6,
+            power: 0.15,
+        };
+        let shots = |noisy: bool| -> Vec<Vec3> {
+            let mut rng = MatchRng::new(3, 1, noisy);
+            (0..20).map(|_| shot_velocity(&shooter, Vec2::X, 12.5, &kick, 0.9, &mut rng)).collect()
+        };
+        let fixed = shots(false);
+        assert!(fixed.windows(2).all(|w| w[0] == w[1]));
+        let varied = shots(true);
+        assert!(varied.windows(2).any(|w| w[0] != w[1]));
+        assert!(varied.iter().all(|v| v.x > 10.0), "every shot still goes forward");
     }
 
     #[test]

@@ -2,7 +2,9 @@
 
 use glam::Vec2;
 
-use super::kick::{auto_target, launch};
+use crate::geometry::Side;
+
+use super::kick::{launch, pass_target};
 use super::{GOAL_DEAD_TICKS, GameMode, KickKind, Match, OUT_DEAD_TICKS, Phase};
 use crate::game::input::Kick;
 use crate::physics::{MotionLimits, TICK_SECONDS, move_player, separate_players};
@@ -12,8 +14,16 @@ use crate::stats::Event;
 
 /// Ticks a player cannot touch the ball after kicking it.
 const KICK_COOLDOWN: u16 = 25;
-/// Ticks a kick requested without the ball stays buffered (GRF: up to 2 s).
-const KICK_BUFFER_TICKS: u16 = 200;
+/// Wind-up of a shot and of a pass (ticks) before any turning (see `Match::wind_up_ticks`).
+const SHOT_WIND_UP: f32 = 17.0;
+const PASS_WIND_UP: f32 = 10.0;
+/// How near a loose ball (m) an agent's idle player steps to it by himself (GRF's automatic ball
+/// control: the academy drills' carriers start up to 1.4 m from the ball).
+const BALL_CONTROL_RANGE: f32 = 3.0;
+/// Most players in a match (11 a side).
+const MAX_PLAYERS: usize = 22;
+/// A player's turning rate (rad per tick), as `physics::player_motion` turns him.
+const TURN_PER_TICK: f32 = 0.12;
 /// Sliding tackle: duration (ticks) and initial speed (m/s).
 const SLIDE_TICKS: u16 = 50;
 const SLIDE_SPEED: f32 = 7.5;
@@ -66,12 +76,6 @@ impl Match {
         for p in &mut self.players {
             p.touch_cooldown = p.touch_cooldown.saturating_sub(1);
             p.dive_ticks = p.dive_ticks.saturating_sub(1);
-            if let Some((_, ttl)) = &mut p.pending_kick {
-                *ttl = ttl.saturating_sub(1);
-                if *ttl == 0 {
-                    p.pending_kick = None;
-                }
-            }
         }
         if self.mode != GameMode::Normal {
             self.set_piece_ticks += 1;
@@ -122,46 +126,107 @@ impl Match {
             }
             let input = self.inputs[g];
             if let Some(kick) = input.kick {
-                if self.owner == Some(g) {
-                    self.execute_kick(g, kick);
-                } else if self.agent_driven[g] || self.is_scripted(g) {
-                    self.players[g].pending_kick = Some((kick, KICK_BUFFER_TICKS));
+                // Only the player on the ball can start a kick: GRF drops a press made without the
+                // ball rather than buffering it into a later kick. One kick at a time.
+                if self.owner == Some(g) && self.players[g].pending_kick.is_none() {
+                    let ticks = self.wind_up_ticks(g, &kick);
+                    self.players[g].pending_kick = Some((kick, ticks));
                 }
                 // A kick is a one-tick request.
                 self.inputs[g].kick = None;
-            } else if self.owner == Some(g)
-                && let Some((kick, _)) = self.players[g].pending_kick.take()
-            {
-                self.execute_kick(g, kick);
             }
-            let p = &mut self.players[g];
+            if let Some((kick, left)) = self.players[g].pending_kick {
+                if self.owner != Some(g) {
+                    // Dispossessed during the wind-up: the kick never happens.
+                    self.players[g].pending_kick = None;
+                } else if left <= 1 {
+                    self.execute_kick(g, kick);
+                } else {
+                    self.players[g].pending_kick = Some((kick, left - 1));
+                }
+            }
+            if input.slide {
+                self.inputs[g].slide = false;
+            }
+            let p = &self.players[g];
             if input.slide
                 && self.owner != Some(g)
                 && p.slide_ticks == 0
                 && p.dive_ticks == 0
                 && self.mode == GameMode::Normal
+                && !self.has_best_possession(p.side)
             {
-                // Without a direction a slide goes at a ball within reach, else where he faces.
-                let to_ball = self.ball.xy() - p.position;
-                let dir = if input.velocity.length_squared() > 0.01 {
-                    input.velocity.normalize()
-                } else if to_ball.length_squared() < 25.0 {
-                    to_ball.normalize_or(p.facing)
-                } else {
-                    p.facing
-                };
-                let own_goal = -p.side.attack_sign();
-                if p.is_keeper() && crate::geometry::pitch::in_penalty_area(p.position.x, p.position.y, own_goal) {
-                    p.dive_ticks = DIVE_TICKS;
-                    p.velocity = dir * DIVE_SPEED;
-                } else {
-                    p.slide_ticks = SLIDE_TICKS;
-                    p.facing = dir;
-                    p.velocity = dir * SLIDE_SPEED;
-                }
+                self.start_slide(g, input.velocity);
             }
-            if input.slide {
-                self.inputs[g].slide = false;
+        }
+    }
+
+    /// Whether `side` is the team with the ball: it has it at a player's feet, or the ball is loose
+    /// and one of its players reaches it no later than any opponent. GRF accepts the sliding button
+    /// only from a team without it (its "possession context" below zero); with it, the button is a
+    /// pass or shot button and a slide never pushes a team's own ball on.
+    fn has_best_possession(&self, side: Side) -> bool {
+        if let Some(o) = self.owner {
+            return self.players[o].side == side;
+        }
+        let ball = self.ball.xy();
+        let mut best = [f32::INFINITY; 2];
+        for p in self.players.iter().filter(|p| p.active) {
+            let t = p.position.distance(ball) / p.max_speed.max(1.0);
+            best[p.side.index()] = best[p.side.index()].min(t);
+        }
+        best[side.index()] <= best[side.opponent().index()]
+    }
+
+    /// Starts `g`'s sliding tackle (a keeper in his area dives instead) in the direction of
+    /// `velocity`; without one, at a ball within reach, else where he faces.
+    fn start_slide(&mut self, g: usize, velocity: Vec2) {
+        let to_ball = self.ball.xy() - self.players[g].position;
+        let p = &mut self.players[g];
+        let dir = if velocity.length_squared() > 0.01 {
+            velocity.normalize()
+        } else if to_ball.length_squared() < 25.0 {
+            to_ball.normalize_or(p.facing)
+        } else {
+            p.facing
+        };
+        let own_goal = -p.side.attack_sign();
+        if p.is_keeper() && crate::geometry::pitch::in_penalty_area(p.position.x, p.position.y, own_goal) {
+            p.dive_ticks = DIVE_TICKS;
+            p.velocity = dir * DIVE_SPEED;
+        } else {
+            p.slide_ticks = SLIDE_TICKS;
+            p.facing = dir;
+            p.velocity = dir * SLIDE_SPEED;
+        }
+    }
+
+    /// Ticks from the request of `kick` by the owner `g` to the ball leaving his foot: the kick's
+    /// own wind-up plus the time to turn to its target at his turning rate. GRF's ball leaves the
+    /// foot 20–30 ticks after a shot is asked for by a player facing the goal, and 40 ticks after
+    /// a pass played straight back (GRF 2.10, measured; the button's 10 ticks come on top, see
+    /// `env`). A stochastic match adds up to 6 ticks either way.
+    fn wind_up_ticks(&mut self, g: usize, kick: &Kick) -> u16 {
+        let base = if kick.kind == KickKind::Shot { SHOT_WIND_UP } else { PASS_WIND_UP };
+        let aim = self.kick_target(g, kick) - self.players[g].position;
+        let turn =
+            if aim.length_squared() > 1e-6 { self.players[g].facing.angle_to(aim).abs() / TURN_PER_TICK } else { 0.0 };
+        (base + turn + 3.0 + self.rng.noise(3.0)).round().max(1.0) as u16
+    }
+
+    /// Where `kick` by `g` goes: its point, or for a direction the goal (a shot) or the receiver
+    /// chosen as GRF chooses for an agent's pass.
+    fn kick_target(&self, g: usize, kick: &Kick) -> Vec2 {
+        let side = self.players[g].side;
+        match kick.target {
+            super::KickTarget::Point(p) => p,
+            super::KickTarget::Direction(_) if kick.kind == KickKind::Shot => {
+                let keeper_y =
+                    self.team(side.opponent()).iter().find(|p| p.is_keeper() && p.active).map(|k| k.position.y);
+                super::kick::shot_target(side.attack_sign(), keeper_y, self.players[g].position.y)
+            }
+            super::KickTarget::Direction(dir) => {
+                pass_target(kick.kind, &self.players[g], self.team(side), dir, kick.power)
             }
         }
     }
@@ -169,19 +234,7 @@ impl Match {
     /// Executes `kick` by the ball owner `g`.
     pub(crate) fn execute_kick(&mut self, g: usize, kick: Kick) {
         let side = self.players[g].side;
-        let target = match kick.target {
-            super::KickTarget::Point(p) => p,
-            super::KickTarget::Direction(dir) => {
-                if kick.kind == KickKind::Shot {
-                    let keeper_y =
-                        self.team(side.opponent()).iter().find(|p| p.is_keeper() && p.active).map(|k| k.position.y);
-                    super::kick::shot_target(side.attack_sign(), keeper_y, self.players[g].position.y)
-                } else {
-                    let (mates, opponents) = (self.team(side), self.team(side.opponent()));
-                    auto_target(kick.kind, &self.players[g], mates, opponents, dir)
-                }
-            }
-        };
+        let target = self.kick_target(g, &kick);
         let kicker = &self.players[g];
         let stat = if kick.kind == KickKind::Shot { kicker.attributes.shooting } else { kicker.attributes.passing };
         let accuracy = kicker.skill(stat, self.theta(g));
@@ -215,6 +268,17 @@ impl Match {
 
     fn move_players(&mut self) {
         let base = MotionLimits::default();
+        // Per player: the direction of a kick he is winding up, or the step an idle agent's player
+        // takes to a loose ball he is the one to control. At most 22 players: on the stack.
+        let mut aims = [None; MAX_PLAYERS];
+        let mut controls = [None; MAX_PLAYERS];
+        for g in 0..self.players.len().min(MAX_PLAYERS) {
+            if let Some((kick, _)) = self.players[g].pending_kick {
+                aims[g] = Some(self.kick_target(g, &kick) - self.players[g].position);
+            } else if self.agent_driven[g] && self.inputs[g].velocity == Vec2::ZERO {
+                controls[g] = self.ball_control_step(g);
+            }
+        }
         let fatigue_tick = self.in_play_ticks.is_multiple_of(FATIGUE_EVERY);
         for g in 0..self.players.len() {
             let theta = self.theta(g);
@@ -238,6 +302,13 @@ impl Match {
                 ..base
             };
             let mut input = self.inputs[g];
+            if let Some(aim) = aims[g] {
+                // Winding up a kick: he slows to a stop and turns to its target.
+                input.velocity = Vec2::ZERO;
+                input.look = aim;
+            } else if let Some(step) = controls[g] {
+                input.velocity = step;
+            }
             if self.taker == Some(g) {
                 // A set-piece taker stands at the ball until he plays it.
                 input.velocity = Vec2::ZERO;
@@ -256,6 +327,28 @@ impl Match {
             }
             move_player(p, &input, limits, TICK_SECONDS);
         }
+    }
+
+    /// GRF's automatic ball control for an agent's player who holds no direction: when the ball is
+    /// loose, slow and low within [`BALL_CONTROL_RANGE`] of him, and nobody is nearer to it, he
+    /// steps to it and takes it (GRF's human controller issues ball-control and trap commands by
+    /// itself). The velocity to step with, if so.
+    fn ball_control_step(&self, g: usize) -> Option<Vec2> {
+        if self.owner.is_some() || self.mode != GameMode::Normal {
+            return None;
+        }
+        let ball = self.ball;
+        let me = &self.players[g];
+        let to = ball.xy() - me.position;
+        let d2 = to.length_squared();
+        if ball.position.z > 0.5
+            || d2 > BALL_CONTROL_RANGE * BALL_CONTROL_RANGE
+            || (ball.velocity.truncate() - me.velocity).length_squared() > 9.0
+        {
+            return None;
+        }
+        let nearer = self.players.iter().any(|p| p.active && p.position.distance_squared(ball.xy()) < d2);
+        (!nearer).then(|| to.normalize_or_zero() * DRIBBLE_SPEED)
     }
 
     fn move_ball(&mut self) {

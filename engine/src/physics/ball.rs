@@ -6,15 +6,24 @@ use glam::{Vec2, Vec3};
 use super::colliders::{PitchColliders, Surface};
 use crate::geometry::pitch::{BALL_RADIUS, GRAVITY, RIM_HALF_LENGTH, RIM_HALF_WIDTH};
 
-/// Quadratic air drag coefficient k in a = -k·|v|·v (1/m). A football (0.43 kg, 0.038 m²,
-/// Cd ≈ 0.25 at match speeds) gives ½ρCdA/m ≈ 0.013; GRF uses 0.015 (grf.md §7.4).
-pub const BALL_DRAG: f32 = 0.014;
+/// Quadratic air drag coefficient k in a = -k·|v|·v (1/m), GRF's ball constant (GRF 2.10's
+/// engine; a football of 0.43 kg, 0.038 m² and Cd ≈ 0.25 gives ½ρCdA/m ≈ 0.013).
+pub const BALL_DRAG: f32 = 0.015;
 /// Restitution of a bounce on grass (GRF 0.62, grf.md §7.4).
 pub const BOUNCE_RESTITUTION: f32 = 0.62;
-/// Constant part of the rolling deceleration (m/s²).
-pub const ROLL_DECELERATION: f32 = 1.0;
-/// Speed-proportional part of the rolling deceleration (1/s): grass resists a fast ball more.
-pub const ROLL_VISCOUS: f32 = 0.15;
+/// Constant part of the rolling deceleration (m/s²), GRF's ground friction (GRF 2.10's engine).
+pub const ROLL_DECELERATION: f32 = 1.6;
+/// Quadratic part of the rolling deceleration (1/m): a = -(1.6 + 0.04·v²) on the grass, GRF's
+/// ground friction. A ball rolled at 10 m/s stops after about 16 m, one at 20 m/s after 25 m.
+pub const ROLL_QUADRATIC: f32 = 0.04;
+
+/// The speed (m/s) a ball rolling at `speed` keeps after `dt` seconds on the grass: the quadratic
+/// loss first, then the constant one, as GRF's engine applies them.
+#[inline]
+pub fn rolled_speed(speed: f32, dt: f32) -> f32 {
+    let s = speed - ROLL_QUADRATIC * speed * speed * dt;
+    (s - ROLL_DECELERATION * dt).max(0.0)
+}
 /// Below this vertical speed (m/s) a bouncing ball settles into rolling.
 const SETTLE_SPEED: f32 = 0.8;
 
@@ -54,8 +63,8 @@ impl Ball {
             self.velocity.z = 0.0;
             let v = self.velocity.truncate();
             let speed = v.length();
-            let loss = (ROLL_DECELERATION + ROLL_VISCOUS * speed) * dt;
-            let v = if loss >= speed { Vec2::ZERO } else { v * ((speed - loss) / speed) };
+            let kept = rolled_speed(speed, dt);
+            let v = if kept <= 0.0 { Vec2::ZERO } else { v * (kept / speed) };
             self.velocity = v.extend(0.0);
             // Rolling without slipping: ω = ẑ × v / r.
             self.spin = Vec3::new(-v.y, v.x, 0.0) / BALL_RADIUS;
@@ -126,7 +135,8 @@ mod tests {
         b.velocity = Vec3::new(10.0, 0.0, 0.0);
         run(&mut b, 1500, &c);
         assert_eq!(b.velocity, Vec3::ZERO);
-        assert!((20.0..35.0).contains(&b.position.x), "rolled {}", b.position.x);
+        // GRF's friction: ln(1 + 0.04·10²/1.6) / (2·0.04) ≈ 15.7 m.
+        assert!((14.5..17.0).contains(&b.position.x), "rolled {}", b.position.x);
     }
 
     #[test]

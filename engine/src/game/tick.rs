@@ -220,10 +220,8 @@ impl Match {
         let side = self.players[g].side;
         match kick.target {
             super::KickTarget::Point(p) => p,
-            super::KickTarget::Direction(_) if kick.kind == KickKind::Shot => {
-                let keeper_y =
-                    self.team(side.opponent()).iter().find(|p| p.is_keeper() && p.active).map(|k| k.position.y);
-                super::kick::shot_target(side.attack_sign(), keeper_y, self.players[g].position.y)
+            super::KickTarget::Direction(dir) if kick.kind == KickKind::Shot => {
+                super::kick::aimed_shot_target(&self.players[g], dir)
             }
             super::KickTarget::Direction(dir) => {
                 pass_target(kick.kind, &self.players[g], self.team(side), dir, kick.power)

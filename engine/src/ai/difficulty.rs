@@ -1,6 +1,9 @@
 //! Difficulty θ ∈ [0, 1]: how quickly and how well a team's AI decides (GRF: easy 0.05, medium
 //! 0.6, hard 0.95; grf.md §2.3, §7.6).
 
+/// Noise on the value of the AI's options, at every θ (see [`Difficulty::decision_noise`]).
+const DECISION_NOISE: f32 = 0.2;
+
 /// The parameters a team's θ sets. All are smooth in θ.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Difficulty {
@@ -10,13 +13,17 @@ pub struct Difficulty {
     /// (1 − θ)·100 ms of reaction time (grf.md §7.6). Fractional: the AI carries the remainder from
     /// one decision to the next, so the mean interval is exactly this and smooth in θ.
     pub reaction_ticks: f32,
-    /// Distance (m) within which the nearest player presses the ball carrier: 35·(0.3 + 0.7·θ)
-    /// (GRF scales its pressing threshold by 0.3 + 0.7·θ).
+    /// Distance (m) within which the nearest player presses the ball carrier: 15·(0.3 + 0.7·θ).
+    /// GRF's hunting distance is (10 + 10·(1 − mindset)) m, less as the team tires and runs,
+    /// times the same 0.3 + 0.7·θ as every stat (GRF 2.10's AI); 15 m is its middle.
     pub hunt_distance: f32,
-    /// Amplitude of the noise added to the value of each option (pass, shot, dribble): poor
-    /// decisions at low θ. Zero in deterministic scenarios (the match RNG returns no noise).
+    /// Amplitude of the noise added to the value of each option (pass, shot, dribble). The same
+    /// at every θ: GRF's AI has no decision noise tied to θ, its choices are as random at any θ
+    /// and worse only through the players' weaker stats. Zero in deterministic scenarios (the
+    /// match RNG returns no noise).
     pub decision_noise: f32,
-    /// Aim error scale for AI shots and passes at the goal (m of lateral error at 20 m).
+    /// How far (m) an AI shot's aim may stray sideways from the point chosen: GRF's ±(1 − shot
+    /// stat) m, with a typical shooter's stat of 0.85 scaled by 0.3 + 0.7·θ.
     pub aim_error: f32,
 }
 
@@ -27,9 +34,9 @@ impl Difficulty {
         Difficulty {
             theta,
             reaction_ticks: 5.0 + 10.0 * (1.0 - theta),
-            hunt_distance: 35.0 * (0.3 + 0.7 * theta),
-            decision_noise: 0.45 * (1.0 - theta) + 0.03,
-            aim_error: 0.4 + 3.2 * (1.0 - theta),
+            hunt_distance: 15.0 * (0.3 + 0.7 * theta),
+            decision_noise: DECISION_NOISE,
+            aim_error: 1.0 - 0.85 * (0.3 + 0.7 * theta),
         }
     }
 }
@@ -44,7 +51,8 @@ mod tests {
         let hard = Difficulty::new(0.95);
         assert!(hard.reaction_ticks < easy.reaction_ticks);
         assert!(hard.hunt_distance > easy.hunt_distance);
-        assert!(hard.decision_noise < easy.decision_noise);
+        assert!(hard.aim_error < easy.aim_error);
+        assert_eq!(hard.decision_noise, easy.decision_noise);
         assert_eq!(Difficulty::new(1.0).reaction_ticks, 5.0);
         assert!(Difficulty::new(0.61).reaction_ticks < Difficulty::new(0.6).reaction_ticks);
         assert_eq!(Difficulty::new(7.0).theta, 1.0);

@@ -112,3 +112,22 @@ fn the_same_shot_ends_differently_only_in_a_stochastic_match() {
     let varied = shot_outcomes("academy_empty_goal_close", false);
     assert!(varied.windows(2).any(|w| w[0] != w[1]), "stochastic: {varied:?}");
 }
+
+#[test]
+fn a_goal_does_not_end_a_drill_that_ends_on_out_of_play_only() {
+    // GRF (issue 15, cause 9): the kickoff after a goal is taken at once, game_mode never shows it
+    // at a step, so a drill ending on out of play but not on score plays on after a goal.
+    let mut scenario = common::scenario("academy_empty_goal_close");
+    scenario.end_episode_on_score = false;
+    scenario.end_episode_on_possession_change = false;
+    scenario.end_episode_on_out_of_play = true;
+    let mut env = Env::new(scenario, 5).unwrap();
+    play(&mut env, &[], 2);
+    let (_, goal) = play(&mut env, &[Action::Shot], 20);
+    assert!(goal, "the shot goes in");
+    for step in 0..20 {
+        let out = env.step(&[Action::Idle]).unwrap();
+        assert!(!out.terminated, "ended {step} steps after the goal");
+        assert_eq!(env.info().game_mode, touchline_engine::GameMode::Normal, "step {step} after the goal");
+    }
+}

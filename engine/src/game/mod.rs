@@ -346,7 +346,7 @@ impl Match {
 
     /// Hands every player of `side` that an agent drove but no controller drives now
     /// (`controlled`: the team's controlled players, index in team) back to the built-in AI or to
-    /// his behaviour, as GRF does when control switches; a kick he buffered is forgotten.
+    /// his behaviour, as GRF does when control switches; a kick he was winding up is forgotten.
     pub(crate) fn release_uncontrolled(&mut self, side: Side, controlled: &[usize]) {
         let start = self.ranges[side.index()].start;
         for g in self.ranges[side.index()].clone() {

@@ -45,8 +45,8 @@ pub struct Player {
     pub(crate) slide_ticks: u16,
     /// Ticks left of a goalkeeper's dive.
     pub(crate) dive_ticks: u16,
-    /// A kick requested before the player had the ball, and the ticks it stays valid (GRF buffers
-    /// actions up to 2 s).
+    /// A kick being wound up by the player on the ball, and the ticks until the ball leaves his
+    /// foot (it never does if he loses the ball first).
     pub(crate) pending_kick: Option<(Kick, u16)>,
 }
 

@@ -273,7 +273,7 @@ impl Match {
         for g in 0..self.players.len().min(MAX_PLAYERS) {
             if let Some((kick, _)) = self.players[g].pending_kick {
                 aims[g] = Some(self.kick_target(g, &kick) - self.players[g].position);
-            } else if self.agent_driven[g] && self.inputs[g].velocity == Vec2::ZERO {
+            } else if self.agent_driven[g] {
                 controls[g] = self.ball_control_step(g);
             }
         }
@@ -327,10 +327,11 @@ impl Match {
         }
     }
 
-    /// GRF's automatic ball control for an agent's player who holds no direction: when the ball is
-    /// loose, slow and low within [`BALL_CONTROL_RANGE`] of him, and nobody is nearer to it, he
-    /// steps to it and takes it (GRF's human controller issues ball-control and trap commands by
-    /// itself). The velocity to step with, if so.
+    /// GRF's automatic ball control for an agent's player: when the ball is loose, slow and low
+    /// within [`BALL_CONTROL_RANGE`] of him, and nobody is nearer to it, he steps to it and takes it
+    /// whatever the stick says (GRF's human controller issues ball-control and trap commands by
+    /// itself; the stick then steers the dribble). The velocity to step with, if so: his own pace,
+    /// at least a dribble's.
     fn ball_control_step(&self, g: usize) -> Option<Vec2> {
         if self.owner.is_some() || self.mode != GameMode::Normal {
             return None;
@@ -346,7 +347,8 @@ impl Match {
             return None;
         }
         let nearer = self.players.iter().any(|p| p.active && p.position.distance_squared(ball.xy()) < d2);
-        (!nearer).then(|| to.normalize_or_zero() * DRIBBLE_SPEED)
+        let pace = self.inputs[g].velocity.length().max(DRIBBLE_SPEED);
+        (!nearer).then(|| to.normalize_or_zero() * pace)
     }
 
     fn move_ball(&mut self) {

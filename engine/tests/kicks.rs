@@ -55,9 +55,9 @@ fn a_long_pass_with_only_the_keeper_to_receive_goes_back_to_him() {
 #[test]
 fn the_ball_leaves_the_foot_after_the_release_and_the_wind_up() {
     // academy_empty_goal_close, the CB facing the empty goal with the ball: one step of shot.
+    // GRF shows the ball at his feet owned by nobody until he plays it; his button counts.
     let mut env = common::env("academy_empty_goal_close", 5);
     play(&mut env, &[], 2);
-    assert!(owned_by_agent(&env));
     let start = env.observations()[0].ball[0];
     let (ball, goal) = play(&mut env, &[Action::Shot], 20);
     let left = ball.iter().position(|b| b[0] > start + 0.01).expect("the shot is struck");

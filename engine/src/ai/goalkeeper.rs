@@ -11,6 +11,26 @@ use crate::player::nearest_distance;
 
 /// Ticks a keeper holds the ball before distributing it.
 const HOLD_TICKS: u64 = 60;
+/// After this many ticks holding it he plays it even to a marked team-mate (GRF: 4 s).
+const HOLD_LIMIT_TICKS: u64 = 400;
+/// A team-mate with no opponent this near (m) is free to receive the keeper's ball (GRF: 10 m).
+const FREE_OF: f32 = 10.0;
+/// How far in front of his goal line the keeper stands (m), GRF's 0.7 m.
+const KEEPER_LINE: f32 = 0.7;
+/// With his team on the ball, the share of the way out to it the keeper stands (GRF: 0.3).
+const OUT_IN_POSSESSION: f32 = 0.3;
+/// A carrier's shooting point lies this far from goal on his line to it (m), GRF's 20 m.
+const SHOOTING_DISTANCE: f32 = 20.0;
+/// A team-mate this near the carrier (m) is on him: the keeper leaves the carrier to him. GRF's
+/// keepers do not come out for a carrier with defenders at his back (measured: an idle carrier at
+/// the centre spot with five defenders round him keeps the ball from the keeper for 400 steps in
+/// 94 % of academy_run_to_score_with_keeper episodes).
+const ENGAGED: f32 = 10.0;
+/// A rushing keeper goes for the spot this far short of the ball (m), on its goal side.
+const RUSH_SHORT_OF_BALL: f32 = 0.5;
+/// A keeper with nobody to give the ball to clears it this far along his facing (m): GRF's high
+/// pass at input power 0.5.
+const CLEARANCE: f32 = 30.0;
 
 /// The plan for goalkeeper `g` (not holding the ball: see [`distribute`]).
 pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Difficulty) -> Plan {
@@ -48,14 +68,46 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
         }
     }
 
-    // Positioning on the ball–goal line, further out as the ball comes nearer.
+    // GRF's rush rule: against a carrier whose shooting point no team-mate covers, come out all
+    // the way to the ball.
+    if let Some(carrier) = view.owner.filter(|&o| view.players[o].side != me.side)
+        && !covered(view, g, frame, frame.vec2(view.players[carrier].position))
+    {
+        let at_t = ball_t + (goal_t - ball_t).normalize_or(Vec2::NEG_X) * RUSH_SHORT_OF_BALL;
+        return Plan::go(frame.vec2(at_t), me.max_speed, ball - me.position);
+    }
+
+    // Positioning on the ball–goal line, a little in front of the goal line; with his team on the
+    // ball he stands up to 30 % of the way out to it (GRF's keeper positioning).
+    let ours = view.owner_side() == Some(me.side);
     let to_ball = ball_t - goal_t;
     let dist = to_ball.length();
-    let depth = (1.0 + 0.08 * dist).clamp(1.0, 5.5).min(dist * 0.5);
-    let target_t = goal_t + to_ball.normalize_or(Vec2::X) * depth;
+    let depth = KEEPER_LINE + if ours { OUT_IN_POSSESSION * (dist - 0.5).max(0.0) } else { 0.0 };
+    let target_t = goal_t + to_ball.normalize_or(Vec2::X) * depth.min(dist * 0.5).max(KEEPER_LINE.min(dist));
     let target = frame.vec2(target_t);
-    let speed = if target.distance(me.position) > 3.0 { me.max_speed } else { 4.0 };
+    // GRF's keeper moves at a pace that grows with the distance to his spot, up to a sprint.
+    let speed = (target.distance(me.position) * 3.0).min(me.max_speed);
     Plan::go(target, speed, ball - me.position)
+}
+
+/// Whether a team-mate of keeper `g` covers the shooting point of a carrier at `carrier_t` (team
+/// frame): the point 20 m out on the carrier's line to goal (the carrier himself when nearer).
+/// Covered when some outfield team-mate is at least 1 m nearer to it than the carrier (GRF's rush
+/// rule compares times at equal pace).
+fn covered(view: &MatchView, g: usize, frame: crate::geometry::TeamFrame, carrier_t: Vec2) -> bool {
+    let goal_t = Vec2::new(-HALF_LENGTH, 0.0);
+    let to_carrier = carrier_t - goal_t;
+    let point = if to_carrier.length() > SHOOTING_DISTANCE {
+        goal_t + to_carrier.normalize() * SHOOTING_DISTANCE
+    } else {
+        carrier_t
+    };
+    let carrier_distance = carrier_t.distance(point);
+    let me = &view.players[g];
+    view.team(me.side).iter().filter(|p| p.active && !p.is_keeper()).any(|p| {
+        let at = frame.vec2(p.position);
+        at.distance(point) + 1.0 < carrier_distance || at.distance(carrier_t) < ENGAGED
+    })
 }
 
 /// The keeper holds the ball: wait a moment, then play it to the most open team-mate (short if
@@ -64,16 +116,24 @@ pub fn distribute(view: &MatchView, g: usize, held_for: u64, analysis: &Analysis
     let me = &view.players[g];
     let ball = view.ball.xy();
     if held_for < HOLD_TICKS {
-        return Plan::go(me.position, 0.0, frame_forward(analysis));
+        // Alone, he keeps facing the way he came: that is where his clearance goes.
+        let alone = !view.team(me.side).iter().any(|p| p.active && p.index != me.index);
+        return Plan::go(me.position, 0.0, if alone { me.facing } else { frame_forward(analysis) });
     }
     let opponents = view.team(me.side.opponent());
     let mut best = None;
     let mut best_value = f32::NEG_INFINITY;
+    let mut anyone = false;
     for mate in view.team(me.side) {
         if !mate.active || mate.index == me.index {
             continue;
         }
+        anyone = true;
         let free = nearest_distance(opponents, mate.position);
+        if free < FREE_OF && held_for < HOLD_LIMIT_TICKS {
+            // GRF's keeper waits rather than give the ball to a marked team-mate.
+            continue;
+        }
         let d = mate.position.distance(ball);
         let value = free.min(15.0) - 0.05 * d;
         if value > best_value {
@@ -89,8 +149,11 @@ pub fn distribute(view: &MatchView, g: usize, held_for: u64, analysis: &Analysis
                 ..Plan::go(me.position, 0.0, at - me.position)
             }
         }
+        None if anyone => Plan::go(me.position, 0.0, frame_forward(analysis)),
         None => {
-            let at = ball + frame_forward(analysis) * 40.0;
+            // Nobody to give it to: a high ball along the way he faces (GRF), which can be over
+            // his own line if he ran out towards it.
+            let at = ball + me.facing * CLEARANCE;
             Plan {
                 kick: Some(Kick { kind: KickKind::HighPass, target: KickTarget::Point(at), height: 0.0, power: 0.5 }),
                 ..Plan::go(me.position, 0.0, at - ball)

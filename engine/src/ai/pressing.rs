@@ -13,6 +13,11 @@ use crate::player::Player;
 /// off goal-side, a still carrier could shield it for ever). Shared with the `press` behaviour.
 pub(crate) fn close_down(p: &Player, carrier: &Player, ball: Vec2) -> Vec2 {
     if p.position.distance(carrier.position) < 2.5 {
+        if crate::game::duel_likeliness(p.position, carrier.position, ball) < 0.2 {
+            // Behind him, his body between us and the ball: stay on his back (GRF's defender does
+            // not run round a carrier; contact draws him round slowly, if at all).
+            return carrier.position + (p.position - carrier.position).normalize_or_zero() * 0.8;
+        }
         ball + (ball - carrier.position).normalize_or_zero() * 0.3
     } else {
         let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);

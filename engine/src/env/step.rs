@@ -155,7 +155,7 @@ impl Env {
             };
             let global = if side == Side::Right { action.rotated() } else { action };
             let mut sticky = self.state.game.script_sticky(g);
-            let press = sticky.apply(global, self.state.game.owner() == Some((side, index)));
+            let press = sticky.apply(global, self.state.game.may_play_ball(side, index));
             let input = sticky_input(&sticky, press, &self.state.game.players()[g]);
             self.state.game.set_script_input(g, input, sticky);
         }
@@ -249,7 +249,7 @@ impl Env {
         let side = self.state.controllers[i].side;
         let global = if side == Side::Right { action.rotated() } else { action };
         let index = self.state.controlled[i];
-        let on_ball = self.state.game.owner() == Some((side, index));
+        let on_ball = self.state.game.may_play_ball(side, index);
         let press = self.state.controllers[i].sticky.apply(global, on_ball);
         let sticky = self.state.controllers[i].sticky;
         if sticky.builtin {

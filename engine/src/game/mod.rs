@@ -14,6 +14,7 @@ use std::sync::Arc;
 pub use action::{Action, ActionSet, DIRECTIONS};
 pub use input::{Kick, KickKind, KickTarget, PlayerInput};
 pub use mode::GameMode;
+pub(crate) use possession::duel_likeliness;
 
 use crate::ai::TeamAi;
 use crate::geometry::coords::{ball_start_to_world, formation_to_world};
@@ -99,6 +100,11 @@ pub struct Match {
     /// A stoppage the referee called during this tick's ball handling (offside, a foul in the
     /// area), acted on at the end of the tick.
     pub(crate) whistle: Option<Stoppage>,
+    /// Ticks left during which nobody can touch the ball just kicked: a player needs GRF's
+    /// reaction time (its mental-image delay, 40–80 ms) before he can play a ball struck next to
+    /// him.
+    #[serde(default)]
+    pub(crate) unreachable_ticks: u16,
     /// The match statistics so far.
     pub(crate) stats: MatchStats,
     /// Events since the env's last step began.
@@ -185,6 +191,7 @@ impl Match {
             pending_foul: None,
             pending_pass: None,
             whistle: None,
+            unreachable_ticks: 0,
             stats: MatchStats::default(),
             events: EventLog::default(),
             behaviours: Vec::new(),
@@ -330,6 +337,12 @@ impl Match {
     /// Whether an agent drives `side`'s player `index` (index in team) this step.
     pub fn is_agent_driven(&self, side: Side, index: usize) -> bool {
         self.agent_driven[self.global_index(side, index)]
+    }
+
+    /// Whether `side`'s player `index` may play the ball now: he has it, or it lies loose at his
+    /// feet and nobody is nearer. His pass and shot buttons count only then.
+    pub fn may_play_ball(&self, side: Side, index: usize) -> bool {
+        self.may_play(self.global_index(side, index))
     }
 
     /// Gives `side`'s player `index` to an agent (`Some(input)`) or back to the built-in AI (`None`).

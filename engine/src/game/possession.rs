@@ -35,6 +35,8 @@ const SLIDE_REACH: f32 = 1.3;
 const BODY_CONTACT: f32 = 0.9;
 /// Share of a keeper's parries near his goal that go round the post for a corner.
 const PARRY_WIDE: f32 = 0.4;
+/// A challenger gets to the ball round the carrier only this likely or more (GRF: 0.2).
+const MIN_DUEL_LIKELINESS: f32 = 0.2;
 /// Ticks a dispossessed player cannot touch the ball.
 const TACKLED_COOLDOWN: u16 = 40;
 
@@ -81,12 +83,31 @@ impl Match {
                 }
                 return;
             }
-            if sliding || d2 >= TACKLE_RANGE * TACKLE_RANGE {
+            if sliding {
                 continue;
             }
+            if p.is_keeper()
+                && in_penalty_area(p.position.x, p.position.y, -p.side.attack_sign())
+                && d2 < HAND_REACH * HAND_REACH
+                && self.ball.position.z < HAND_HEIGHT
+            {
+                // A keeper in his own area takes a dribbled ball with his hands: nobody holds it
+                // (GRF's keeper claims any ball no one retains, and a slow one he always catches).
+                self.claimed(owner, q);
+                return;
+            }
+            if d2 >= TACKLE_RANGE * TACKLE_RANGE {
+                continue;
+            }
+            let likeliness = duel_likeliness(p.position, self.players[owner].position, ball);
             let dribbling = self.inputs[owner].dribble;
             let control = self.skill_of(owner, self.players[owner].attributes.ball_control).max(0.05);
-            let odds = TACKLE_CHANCE * (0.3 + tackling) / (0.3 + control) * if dribbling { 0.6 } else { 1.0 };
+            let odds = if likeliness < MIN_DUEL_LIKELINESS {
+                // Behind the carrier, with his body between him and the ball: no way to it.
+                0.0
+            } else {
+                TACKLE_CHANCE * likeliness * (0.3 + tackling) / (0.3 + control) * if dribbling { 0.6 } else { 1.0 }
+            };
             let roll = self.rng.unit();
             if roll < odds {
                 self.tackled(owner, q);
@@ -110,13 +131,32 @@ impl Match {
         }
     }
 
-    /// `q` took the ball from `owner` (or knocked it away with a slide).
+    /// The keeper `q` took the ball in his hands from the dribbler `owner`.
+    fn claimed(&mut self, owner: usize, q: usize) {
+        self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
+        self.last_touch = Some(q);
+        self.touched(q);
+        if self.whistle.is_some() {
+            return;
+        }
+        let to_ball = self.ball.xy() - self.players[q].position;
+        self.carry_distance = to_ball.length().clamp(0.3, STILL_BALL_REACH);
+        self.owner = Some(q);
+        self.gained(q);
+        self.ball.velocity = self.players[q].velocity.extend(0.0);
+    }
+
+    /// `q` knocked the ball off `owner` (a standing challenge or a slide): GRF's interfere touch
+    /// pokes it on at half the tackler's pace plus 4 m/s away from him (6 m/s from a slide), and
+    /// lifts it 0.5–1.5 m/s off the grass in a stochastic match. Where it goes is open: often to
+    /// the tackler's team, sometimes back to the carrier's.
     fn tackled(&mut self, owner: usize, q: usize) {
         let ball = self.ball.xy();
         let tackler = &self.players[q];
         let away = (ball - tackler.position).normalize_or(tackler.facing);
-        let push = if tackler.is_sliding() { 6.0 } else { 1.5 };
-        self.ball.velocity = (tackler.velocity * 0.6 + away * push).extend(0.0);
+        let push = if tackler.is_sliding() { 6.0 } else { 4.0 };
+        let lift = 1.0 + self.rng.noise(0.5);
+        self.ball.velocity = (tackler.velocity * 0.5 + away * push).extend(lift);
         self.owner = None;
         self.last_touch = Some(q);
         self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
@@ -160,8 +200,51 @@ impl Match {
         self.possessor = Some(g);
     }
 
+    /// Whether `g` may play the ball now: he has it, or it lies loose, slow and low at his feet
+    /// (within [`FOOT_REACH`]) and nobody is nearer (GRF's designated possession player, whose pass and shot buttons
+    /// count though he has not touched it yet).
+    pub(crate) fn may_play(&self, g: usize) -> bool {
+        if self.owner == Some(g) {
+            return true;
+        }
+        if self.owner.is_some() || self.mode != GameMode::Normal || !self.players[g].active {
+            return false;
+        }
+        let ball = self.ball;
+        let p = &self.players[g];
+        let d2 = p.position.distance_squared(ball.xy());
+        ball.position.z < CHEST_HEIGHT
+            && d2 < FOOT_REACH * FOOT_REACH
+            && (ball.velocity.truncate() - p.velocity).length_squared() < SLOW_BALL * SLOW_BALL
+            && !self.players.iter().any(|q| q.active && q.position.distance_squared(ball.xy()) < d2)
+    }
+
+    /// `g` plays a loose ball he [may play](Match::may_play) without having touched it: he takes
+    /// it now, so that the kick he asks for can follow.
+    pub(crate) fn take_to_play(&mut self, g: usize) {
+        if self.owner == Some(g) {
+            return;
+        }
+        self.last_touch = Some(g);
+        self.touched(g);
+        if self.whistle.is_some() {
+            return;
+        }
+        let to_ball = self.ball.xy() - self.players[g].position;
+        self.carry_distance = to_ball.length().clamp(0.3, STILL_BALL_REACH);
+        self.players[g].facing = to_ball.normalize_or(self.players[g].facing);
+        self.owner = Some(g);
+        self.gained(g);
+        self.ball.velocity = self.players[g].velocity.extend(0.0);
+        self.ball.position.z = BALL_RADIUS;
+    }
+
     /// The nearest player within reach of a loose ball traps, catches or deflects it.
     fn control_loose_ball(&mut self) {
+        if self.unreachable_ticks > 0 {
+            self.unreachable_ticks -= 1;
+            return;
+        }
         let ball = self.ball;
         if ball.position.z > HAND_HEIGHT {
             return;
@@ -184,6 +267,12 @@ impl Match {
                 (FOOT_REACH, FOOT_HEIGHT)
             };
             if ball.position.z > height {
+                continue;
+            }
+            if self.agent_driven[g] && self.possessor.is_none() && resting_at(&ball, self.wanted_velocity(g)) {
+                // An agent's player standing at the ball as it was placed at the start does not
+                // touch it: GRF shows it owned by nobody until he moves or plays it (see
+                // `Match::take_to_play`).
                 continue;
             }
             let d2 = p.position.distance_squared(ball.xy());
@@ -252,5 +341,38 @@ impl Match {
         }
         self.ball.velocity = out;
         self.players[g].touch_cooldown = 15;
+    }
+}
+
+/// Whether the ball is at rest (below 0.3 m/s) and the player asks to stand still (`wanted`: his
+/// input velocity), however others shove him.
+fn resting_at(ball: &crate::physics::Ball, wanted: glam::Vec2) -> bool {
+    ball.velocity.length_squared() < 0.09 && wanted.length_squared() < 0.09
+}
+
+/// How likely a challenger at `challenger` gets to the ball at `ball` played by the carrier at
+/// `carrier`, GRF's duel likeliness 1 − (dot·0.5 + 0.5) in [0, 1]: 0 when the carrier stands
+/// straight between him and the ball, 1 when he faces the carrier across the ball.
+pub(crate) fn duel_likeliness(challenger: glam::Vec2, carrier: glam::Vec2, ball: glam::Vec2) -> f32 {
+    let from_ball = (challenger - ball).normalize_or_zero();
+    let carrier_side = (carrier - ball).normalize_or_zero();
+    1.0 - (from_ball.dot(carrier_side) * 0.5 + 0.5)
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::Vec2;
+
+    use super::duel_likeliness;
+
+    #[test]
+    fn a_challenger_behind_the_carrier_cannot_get_to_the_ball() {
+        // Carrier at the origin, the ball half a metre ahead of him along +x.
+        let (carrier, ball) = (Vec2::ZERO, Vec2::new(0.5, 0.0));
+        assert!(duel_likeliness(Vec2::new(-0.7, 0.0), carrier, ball) < 0.01);
+        assert!(duel_likeliness(Vec2::new(1.3, 0.0), carrier, ball) > 0.99);
+        // Round at his side, level with the ball: a fair chance.
+        let beside = duel_likeliness(Vec2::new(0.45, 0.6), carrier, ball);
+        assert!((0.3..0.7).contains(&beside), "{beside}");
     }
 }

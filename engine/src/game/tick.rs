@@ -12,6 +12,8 @@ use crate::player::DRIBBLE_SPEED;
 use crate::rules::{self, Restart, Stoppage};
 use crate::stats::Event;
 
+/// Ticks after a kick before anyone can touch the ball (see `Match::unreachable_ticks`).
+const REACTION_TICKS: u16 = 5;
 /// Ticks a player cannot touch the ball after kicking it.
 const KICK_COOLDOWN: u16 = 25;
 /// Wind-up of a shot and of a pass (ticks) before any turning (see `Match::wind_up_ticks`).
@@ -20,6 +22,9 @@ const PASS_WIND_UP: f32 = 10.0;
 /// How near a loose ball (m) an agent's idle player steps to it by himself (GRF's automatic ball
 /// control: the academy drills' carriers start up to 1.4 m from the ball).
 const BALL_CONTROL_RANGE: f32 = 3.0;
+/// A loose ball nearer than this (m) is at an idle player's feet already: he does not step to it
+/// (GRF shows such a ball owned by nobody until he plays it).
+const AT_FEET: f32 = 0.7;
 /// Most players in a match (11 a side).
 const MAX_PLAYERS: usize = 22;
 /// A player's turning rate (rad per tick), as `physics::player_motion` turns him.
@@ -55,7 +60,7 @@ impl Match {
         self.run_ai();
         self.apply_kicks_and_tackles();
         self.move_players();
-        separate_players(&mut self.players);
+        separate_players(&mut self.players, self.owner);
         let before = self.ball.position;
         self.move_ball();
         let owner_before = self.owner;
@@ -128,6 +133,9 @@ impl Match {
             if let Some(kick) = input.kick {
                 // Only the player on the ball can start a kick: GRF drops a press made without the
                 // ball rather than buffering it into a later kick. One kick at a time.
+                if self.players[g].pending_kick.is_none() && self.may_play(g) {
+                    self.take_to_play(g);
+                }
                 if self.owner == Some(g) && self.players[g].pending_kick.is_none() {
                     let ticks = self.wind_up_ticks(g, &kick);
                     self.players[g].pending_kick = Some((kick, ticks));
@@ -240,6 +248,7 @@ impl Match {
         let p = &mut self.players[g];
         p.touch_cooldown = KICK_COOLDOWN;
         p.pending_kick = None;
+        self.unreachable_ticks = REACTION_TICKS;
         let index = p.index;
         self.owner = None;
         self.last_touch = Some(g);
@@ -327,6 +336,16 @@ impl Match {
         }
     }
 
+    /// The velocity `g` asks for this tick: his input's, or for an agent's player the step of his
+    /// automatic ball control.
+    pub(crate) fn wanted_velocity(&self, g: usize) -> Vec2 {
+        if self.agent_driven[g] {
+            self.ball_control_step(g).unwrap_or(self.inputs[g].velocity)
+        } else {
+            self.inputs[g].velocity
+        }
+    }
+
     /// GRF's automatic ball control for an agent's player: when the ball is loose, slow and low
     /// within [`BALL_CONTROL_RANGE`] of him, and nobody is nearer to it, he steps to it and takes it
     /// whatever the stick says (GRF's human controller issues ball-control and trap commands by
@@ -340,8 +359,11 @@ impl Match {
         let me = &self.players[g];
         let to = ball.xy() - me.position;
         let d2 = to.length_squared();
+        // A ball already at his feet he leaves be, unless he is on his way to it.
+        let approaching = me.velocity.dot(to) > 0.3 * to.length();
         if ball.position.z > 0.5
             || d2 > BALL_CONTROL_RANGE * BALL_CONTROL_RANGE
+            || (d2 < AT_FEET * AT_FEET && !approaching)
             || (ball.velocity.truncate() - me.velocity).length_squared() > 9.0
         {
             return None;

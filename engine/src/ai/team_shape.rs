@@ -7,6 +7,7 @@ use glam::Vec2;
 use super::{Difficulty, MatchView};
 use crate::geometry::TeamFrame;
 use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
+use crate::player::Role;
 
 /// An opponent this close (m) to a player's place in the shape is marked by him.
 const MARK_RADIUS: f32 = 9.0;
@@ -32,18 +33,31 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Diffi
         Some(o) => view.players[o].side == p.side,
         None => view.last_touch.is_some_and(|t| view.players[t].side == p.side),
     };
+    let loose = view.owner.is_none() && view.last_touch.is_none();
+    let mut y = block_y(
+        p.role,
+        p.home,
+        ball,
+        if ours {
+            1.0
+        } else if loose {
+            0.5
+        } else {
+            0.0
+        },
+    );
+    // Depth: touchline's own, which follows the ball further than GRF's block (GRF's depth alone
+    // left touchline's attack without runners ahead of the ball: 0.7 shots a match).
     let home = p.home;
     let mut x = if ours { 0.5 * home.x + 0.6 * ball.x + 8.0 } else { 0.6 * home.x + 0.45 * ball.x - 6.0 };
-    let mut y = 0.8 * home.y + 0.25 * ball.y;
-    if ours && p.role.is_attacker() && home.x > -0.25 * HALF_LENGTH {
-        // Off-the-ball run: get ahead of the ball, towards the goal, into the channel.
+    if ours && p.role.is_attacker() && p.home.x > -0.25 * HALF_LENGTH {
+        // Off-the-ball run: get ahead of the ball, towards the goal.
         x = x.max(ball.x + 8.0);
-        y *= 0.7;
     }
     if ours && view.owner != Some(g) && !p.role.is_defender() && !p.role.is_attacker() && !p.is_keeper() {
         // Support run: a midfielder near the ball offers a pass ahead of it, on his side of it.
         if Vec2::new(x, y).distance(ball) < SUPPORT_RANGE {
-            let lateral = if home.y >= ball.y { 1.0 } else { -1.0 };
+            let lateral = if p.home.y >= ball.y { 1.0 } else { -1.0 };
             let support = Vec2::new(ball.x + 4.0, ball.y + lateral * 8.0);
             let w = 0.1 + 0.2 * difficulty.theta;
             x += (support.x - x) * w;
@@ -72,6 +86,34 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Diffi
         }
     }
     frame.vec2(target)
+}
+
+/// A player's place across the pitch (team frame, m) in GRF's moving block (GRF 2.10's team AI),
+/// before marking: the block's width is lerped between the defending and attacking tactics by
+/// the possession bias `p` (1: the ball is ours, 0: theirs), the back four a little wider with the
+/// ball; its centre follows the ball, shrunk towards the middle; the formation's place (`home`, m)
+/// maps linearly into it. Then players drift across towards the ball's side (GRF's y-focus). With
+/// the ball, the full backs and the wide midfielders take the width of the pitch (at least 60 %
+/// and 80 % of the half-width out): play that looks like football, beyond GRF's narrower shape.
+fn block_y(role: Role, home: Vec2, ball: Vec2, p: f32) -> f32 {
+    let lerp = |defence: f32, offence: f32| defence + (offence - defence) * p;
+    let wide_midfield = matches!(role, Role::LM | Role::RM);
+    let width = 0.95 * if role.is_defender() { lerp(0.8, 1.0) } else { lerp(0.8, 0.9) };
+    let centre_y = ball.y * ((1.0 - width) * 0.9 + 0.1);
+    // Formation places in GRF's [-1, 1] units: y over 36 m.
+    let hy = home.y / 36.0;
+    let mut y = centre_y + hy * width * HALF_WIDTH;
+    if p > 0.5 && (matches!(role, Role::LB | Role::RB) || wide_midfield) {
+        let out = if wide_midfield { 0.85 } else { 0.7 } * HALF_WIDTH * (2.0 * p - 1.0);
+        if y.abs() < out {
+            y = out.copysign(if hy != 0.0 { hy } else { y });
+        }
+    }
+    // Drift across towards the ball's side: stronger with the ball and when it is wide.
+    let across = (0.5 * p + 0.2 * (1.0 - p))
+        * (1.0 - (ball.y - y).abs() / (2.0 * HALF_WIDTH)).max(0.0)
+        * (0.2 + 0.8 * ball.y.abs() / HALF_WIDTH);
+    y + (ball.y - y) * across * 0.25
 }
 
 /// Moves a defending player's place `target` (team frame) towards the goal side of the nearest

@@ -12,6 +12,7 @@ pub mod goalkeeper;
 pub mod prediction;
 pub mod pressing;
 pub mod set_piece;
+mod sliding;
 pub mod team_shape;
 
 use std::ops::Range;
@@ -228,7 +229,7 @@ impl TeamAi {
             } else if p.is_keeper() {
                 goalkeeper::plan(view, g, &analysis, difficulty)
             } else if let Some(plan) = pressing::plan(view, g, &analysis, difficulty) {
-                plan
+                Plan { slide: sliding::should_slide(view, g, rng), ..plan }
             } else {
                 let target = team_shape::position(view, g, analysis.frame, difficulty);
                 let d = target.distance(p.position);

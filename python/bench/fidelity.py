@@ -6,7 +6,7 @@ run with the same n, the same policies and the same end-of-episode classificatio
 (`fidelity_stats.py` gives the rule: |Δ| > 3 combined se, p̃ in proportions, lengths also 10 % off).
 
   * academy: the 11 Academy drills × random (n = 200) and idle (n = 50): P(goal for), P(goal
-    against), episode length, and the four end shares (goal / out of play / possession / time limit);
+    against), episode length, and the four end shares (goal, out of play, possession, time limit);
   * match: 11 v 11 easy / medium / hard × builtin_ai / idle / random (n = 5, 3001 steps): goals for
     and against per match;
     these 22 + 9 are "the 31 reference cases": a case is flagged when any of its figures is;
@@ -106,7 +106,7 @@ def build_cases(reference: dict[str, Any]) -> list[dict[str, Any]]:
 
 
 def run_case(job: tuple[dict[str, Any], int, int]) -> tuple[list[dict[str, Any]], float]:
-    """Runs one case's episodes (in a worker process); returns them as dicts and the seconds taken."""
+    """Runs one case's episodes (in a worker process): the episodes as dicts, and the seconds."""
     case, n, base_seed = job
     seed = cases.case_seed(base_seed, case["id"])
     policy = case["policy"]
@@ -131,7 +131,11 @@ def compare(case: dict[str, Any], episodes: list[dict[str, Any]]) -> list[fs.Fig
     if section == "academy":
         figures = [
             fs.proportion(
-                "P(goal for)", ref["goal_for"], ref["n"], sum(e["goals_for"] > 0 for e in episodes), n
+                "P(goal for)",
+                ref["goal_for"],
+                ref["n"],
+                sum(e["goals_for"] > 0 for e in episodes),
+                n,
             ),
             fs.proportion(
                 "P(goal against)",
@@ -151,6 +155,9 @@ def compare(case: dict[str, Any], episodes: list[dict[str, Any]]) -> list[fs.Fig
         for end in cases.ENDS:
             k = sum(e["end"] == end for e in episodes)
             figures.append(fs.proportion(f"ends {end}", ref["ends"][end], ref["n"], k, n))
+        others = sum(e["end"] == "other" for e in episodes)
+        if others:  # done on none of GRF's four conditions: a touchline end GRF does not have
+            figures.append(fs.info("ends other", 0.0, others / n))
         return figures
     if section == "match":
         return [
@@ -240,8 +247,7 @@ def format_figure(label: str, figure: fs.Figure) -> str:
 
 def header() -> str:
     return (
-        f"{'case':<62} {'figure':<20} {'GRF ± se':>17} {'touchline ± se':>17} {'z':>6} "
-        f"{'flag':>4}"
+        f"{'case':<62} {'figure':<20} {'GRF ± se':>17} {'touchline ± se':>17} {'z':>6} {'flag':>4}"
     )
 
 
@@ -266,7 +272,7 @@ def main(argv: list[str] | None = None) -> int:
     results: dict[int, tuple[list[dict[str, Any]], float]] = {}
     if args.workers > 1:
         with multiprocessing.Pool(args.workers) as pool:
-            for i, result in zip(order, pool.imap(run_case, [jobs[i] for i in order])):
+            for i, result in zip(order, pool.imap(run_case, [jobs[i] for i in order]), strict=True):
                 results[i] = result
     else:
         for i in order:
@@ -274,7 +280,10 @@ def main(argv: list[str] | None = None) -> int:
     wall = time.perf_counter() - start
 
     print(f"GRF: {reference['source']}")
-    print(f"touchline: through touchline.compat.gfootball, base seed {args.seed}, n × {args.n_scale}\n")
+    print(
+        f"touchline: through touchline.compat.gfootball, base seed {args.seed}, "
+        f"n × {args.n_scale}\n"
+    )
     report: list[dict[str, Any]] = []
     flagged_reference: list[str] = []
     reference_count = 0
@@ -310,8 +319,10 @@ def main(argv: list[str] | None = None) -> int:
                 "episodes": episodes,
             }
         )
-    print(f"\nwall time {wall:.1f} s with {args.workers} worker(s); case seconds summed "
-          f"{sum(r[1] for r in results.values()):.1f} s")
+    print(
+        f"\nwall time {wall:.1f} s with {args.workers} worker(s); case seconds summed "
+        f"{sum(r[1] for r in results.values()):.1f} s"
+    )
     if reference_count:
         print(f"flagged: {len(flagged_reference)} of {reference_count} reference cases")
         for case_id in flagged_reference:
@@ -323,14 +334,14 @@ def main(argv: list[str] | None = None) -> int:
         args.json.write_text(
             json.dumps(
                 _finite(
-                {
-                    "seed": args.seed,
-                    "n_scale": args.n_scale,
-                    "wall_seconds": wall,
-                    "flagged_reference_cases": flagged_reference,
-                    "reference_cases": reference_count,
-                    "cases": report,
-                }
+                    {
+                        "seed": args.seed,
+                        "n_scale": args.n_scale,
+                        "wall_seconds": wall,
+                        "flagged_reference_cases": flagged_reference,
+                        "reference_cases": reference_count,
+                        "cases": report,
+                    }
                 ),
                 indent=1,
             )

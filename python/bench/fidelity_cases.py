@@ -1,5 +1,5 @@
-"""Episodes run as GRF's fidelity cases are run: policies, GRF's end-of-episode classification and the
-per-match statistics of a full match. Shared by `fidelity.py` (the harness) and
+"""Episodes run as GRF's fidelity cases are run: policies, GRF's end-of-episode classification and
+the per-match statistics of a full match. Shared by `fidelity.py` (the harness) and
 `python/tests/test_fidelity.py` (the CI behaviours), which both put this folder on `sys.path`.
 
 Every episode goes through `touchline.compat.gfootball.create_environment(env_name=S,
@@ -18,8 +18,9 @@ from __future__ import annotations
 import copy
 import statistics
 import zlib
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Callable, Protocol
+from typing import Any, Protocol
 
 from touchline.compat.gfootball import FootballEnv, create_environment
 
@@ -57,7 +58,7 @@ def case_seed(base_seed: int, case_id: str) -> int:
 
 
 def make_env(scenario: str, seed: int, builtin_ai: bool = False) -> FootballEnv:
-    """One env of a case, seeded (GRF picks a random engine seed; a fixed one makes runs repeatable)."""
+    """One env of a case, seeded (GRF picks a random engine seed; a fixed one makes runs repeat)."""
     options: dict[str, Any] = {"game_engine_random_seed": seed}
     if builtin_ai:
         options["action_set"] = "v2"
@@ -88,8 +89,8 @@ class Constant:
 
 
 class RandomActions:
-    """GRF's random agent: `sample()` of ONE seeded copy of the env's action space for the whole case
-    (GRF's `env.action_space` is a new object at every read, so the measurement kept one copy)."""
+    """GRF's random agent: `sample()` of ONE seeded copy of the env's action space for the whole
+    case (GRF's `env.action_space` is a new object at every read, so the measurement kept one)."""
 
     def __init__(self, env: FootballEnv, seed: int) -> None:
         self.space = copy.deepcopy(env.action_space)
@@ -117,7 +118,8 @@ class Scripted:
 
 
 class OnceOwned:
-    """Idle until our controlled player owns the ball, then `action` for `times` steps, then idle."""
+    """Idle until our controlled player owns the ball, then `action` for `times` steps, then idle
+    again."""
 
     def __init__(self, action: int, times: int = 1) -> None:
         self.action = action
@@ -181,10 +183,11 @@ class EndTracker:
 class MatchStats:
     """What a full match is made of, counted from raw observations (both teams, per match).
 
-    A restart is an entry into its game_mode; a completed pass is ball ownership moving between two
-    players of one team in normal play, a turnover ownership moving to the other team in normal play;
-    possession is our share of the steps on which a team owns the ball; width is the median, over
-    normal-play owned steps, of the y-span of the outfield players of the team in possession.
+    A restart is an entry into its game_mode; a completed pass is ball ownership moving between
+    two players of one team in normal play, a turnover ownership moving to the other team in
+    normal play; possession is our share of the steps on which a team owns the ball; width is the
+    median, over normal-play owned steps, of the y-span of the outfield players of the team in
+    possession.
     """
 
     restarts: dict[str, int] = field(default_factory=lambda: dict.fromkeys(RESTARTS.values(), 0))
@@ -243,7 +246,9 @@ def _outfield_span(obs: Observation, team: str) -> float:
     """Metres between the two outermost (in y) active outfield players of `team`."""
     ys = [
         float(position[1])
-        for position, role, active in zip(obs[team], obs[f"{team}_roles"], obs[f"{team}_active"])
+        for position, role, active in zip(
+            obs[team], obs[f"{team}_roles"], obs[f"{team}_active"], strict=True
+        )
         if int(role) != GOALKEEPER_ROLE and active
     ]
     return (max(ys) - min(ys)) * METRES_PER_Y if ys else 0.0
@@ -268,7 +273,8 @@ def run_episode(
     with_stats: bool = False,
     on_step: Callable[[int, Observation], None] | None = None,
 ) -> Episode:
-    """Plays one episode from `env.reset()` to `done`; `on_step(step, obs)` sees every observation."""
+    """Plays one episode from `env.reset()` to `done`; `on_step(step, obs)` sees each
+    observation, the reset one as step 0."""
     obs = env.reset()[0]
     policy.start()
     tracker = EndTracker()

@@ -17,8 +17,9 @@ from __future__ import annotations
 
 import math
 import statistics
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any
 
 #: Combined standard errors beyond which a figure differs.
 Z_LIMIT = 3.0
@@ -99,7 +100,7 @@ def mean(
 
 
 def bound(name: str, grf_bound: float, value: float) -> Figure:
-    """A value GRF never exceeded in its episodes (no se given): flagged when touchline exceeds it."""
+    """A value GRF never exceeded in its episodes (no se given): flagged when touchline does."""
     return Figure(name, "bound", grf_bound, None, value, None, None, value > grf_bound, "GRF's max")
 
 
@@ -109,7 +110,7 @@ def info(name: str, grf: float | None, value: float, tl_se: float | None = None)
 
 
 def pooled(samples: Sequence[tuple[int, float, float]]) -> tuple[int, float, float]:
-    """(n, mean, se) of several samples (n_i, mean_i, se_i) taken together, as one sample would give."""
+    """(n, mean, se) of samples (n_i, mean_i, se_i) taken together, as one sample would give."""
     total = sum(n for n, _, _ in samples)
     grand = sum(n * m for n, m, _ in samples) / total
     squares = sum((n - 1) * (se * math.sqrt(n)) ** 2 + n * (m - grand) ** 2 for n, m, se in samples)

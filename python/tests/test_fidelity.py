@@ -1,9 +1,10 @@
 """Behaviours of GRF that must never regress, with wide margins (issue 15).
 
-The full comparison with GRF's figures is `python/bench/fidelity.py` (minutes, outside CI); these are the
-few behaviours that, when broken, let an agent learn a shortcut GRF does not allow. Episodes run through
-`touchline.compat.gfootball` with the harness's own runner and GRF's end classification
-(`python/bench/fidelity_cases.py`). GRF's figures quoted here are from gfootball 2.10.2, run the same way.
+The full comparison with GRF's figures is `python/bench/fidelity.py` (minutes, outside CI); these
+are the few behaviours that, when broken, let an agent learn a shortcut GRF does not allow. Episodes
+run through `touchline.compat.gfootball` with the harness's own runner and GRF's end classification
+(`python/bench/fidelity_cases.py`). GRF's figures quoted here are gfootball 2.10.2's, run the same
+way.
 """
 
 from __future__ import annotations
@@ -16,25 +17,29 @@ from pathlib import Path
 BENCH = Path(__file__).resolve().parents[1] / "bench"
 sys.path.insert(0, str(BENCH))
 
-import fidelity_cases as cases  # noqa: E402
+import fidelity_cases as cases  # noqa: E402 (found through BENCH)
 
 STDLIB = Path(__file__).resolve().parents[2] / "stdlib-scenarios"
 
 
 def test_idle_agent_loses_the_ball_in_empty_goal_close() -> None:
-    # GRF: the opponent's keeper comes, takes the ball and it goes out at step 151 (50 of 50 episodes).
+    # GRF: the opponent's keeper comes, takes the ball and it goes out at step 151 (50 of 50
+    # episodes).
     episodes = cases.run_episodes("academy_empty_goal_close", "idle", 10, seed=1)
     ends = [(e.end, e.steps) for e in episodes]
     assert all(end in ("out_of_play", "possession") and steps < 250 for end, steps in ends), ends
 
 
 def test_no_receiver_long_pass_at_the_centre_spot_does_not_score() -> None:
-    # GRF: the pass goes back to our own keeper, the only team-mate (0 goals); the ball stays near x = 0.02.
+    # GRF: the pass goes back to our own keeper, the only team-mate (0 goals); the ball stays near
+    # x = 0.02.
     episodes = cases.run_episodes(
         "academy_empty_goal", lambda env: cases.OnceOwned(cases.LONG_PASS), 5, seed=2
     )
     goals = [e.goals_for for e in episodes]
-    assert sum(goals) == 0, f"goals per episode {goals}, max ball x {[e.max_ball_x for e in episodes]}"
+    assert sum(goals) == 0, (
+        f"goals per episode {goals}, max ball x {[e.max_ball_x for e in episodes]}"
+    )
 
 
 def test_sliding_in_possession_does_not_move_the_ball_forward() -> None:
@@ -45,14 +50,19 @@ def test_sliding_in_possession_does_not_move_the_ball_forward() -> None:
         policy = cases.OnceOwned(cases.SLIDING, times=20)
         trace: list[tuple[int, float]] = []
 
-        def record(step: int, obs: cases.Observation) -> None:
+        def record(
+            step: int,
+            obs: cases.Observation,
+            trace: list[tuple[int, float]] = trace,
+            policy: cases.OnceOwned = policy,
+        ) -> None:
             trace.append((policy.pressed, float(obs["ball"][0])))
 
         cases.run_episode(env, policy, on_step=record)
         first = next((i for i, (pressed, _) in enumerate(trace) if pressed > 0), None)
         assert first is not None, "our player never owned the ball"
-        # The 20 presses and 10 steps after them.
-        window = [x for _, x in trace[first : first + 30]]
+        # From just before the first of the 20 presses to 10 steps after the last.
+        window = [x for _, x in trace[first - 1 : first + 30]]
         advance = max(window) - window[0]
         assert advance < 0.1, f"the ball went {advance:.3f} forward while its owner pressed sliding"
 

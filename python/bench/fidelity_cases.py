@@ -1,0 +1,328 @@
+"""Episodes run as GRF's fidelity cases are run: policies, GRF's end-of-episode classification and
+the per-match statistics of a full match. Shared by `fidelity.py` (the harness) and
+`python/tests/test_fidelity.py` (the CI behaviours), which both put this folder on `sys.path`.
+
+Every episode goes through `touchline.compat.gfootball.create_environment(env_name=S,
+representation='raw', rewards='scoring')`, exactly as GRF's figures were measured with gfootball:
+one env per case, n episodes in a row, each started with `env.reset()`.
+
+The end of an episode is classified on its last step in the order of GRF's `football_env_core.step`:
+`goal` (the scoring reward is not 0), `out_of_play` (game_mode != 0 while the previous step's was 0;
+the previous one starts at -1), `possession` (ball_owned_team != -1, the last known owner != -1, and
+they differ; the last known owner starts at -1 and is updated only on owned steps), `time_limit`
+(steps_left == 0), else `other`.
+"""
+
+from __future__ import annotations
+
+import copy
+import statistics
+import zlib
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+from touchline.compat.gfootball import FootballEnv, create_environment
+
+# GRF's default action set (grf.md §5): the indices the probes press.
+IDLE = 0
+RIGHT = 5
+LONG_PASS = 9
+HIGH_PASS = 10
+SHOT = 12
+SLIDING = 16
+#: action_set 'v2' adds it: the controlled player is handed to the built-in AI.
+BUILTIN_AI = 19
+
+#: GRF's game_mode values (raw observation).
+NORMAL, KICK_OFF, GOAL_KICK, FREE_KICK, CORNER, THROW_IN, PENALTY = range(7)
+RESTARTS = {
+    GOAL_KICK: "goal_kicks",
+    FREE_KICK: "free_kicks",
+    CORNER: "corners",
+    THROW_IN: "throw_ins",
+    PENALTY: "penalties",
+}
+ENDS = ("goal", "out_of_play", "possession", "time_limit")
+#: Metres per unit of raw y: the pitch's 0.84 units of width are 68 m.
+METRES_PER_Y = 68.0 / 0.84
+#: Role index of a goalkeeper in `left_team_roles` / `right_team_roles`.
+GOALKEEPER_ROLE = 0
+
+Observation = dict[str, Any]
+
+
+def case_seed(base_seed: int, case_id: str) -> int:
+    """A stable seed for one case: the same case gets the same episodes on every run."""
+    return zlib.crc32(f"{base_seed}:{case_id}".encode())
+
+
+def make_env(scenario: str, seed: int, builtin_ai: bool = False) -> FootballEnv:
+    """One env of a case, seeded (GRF picks a random engine seed; a fixed one makes runs repeat)."""
+    options: dict[str, Any] = {"game_engine_random_seed": seed}
+    if builtin_ai:
+        options["action_set"] = "v2"
+    return create_environment(
+        env_name=scenario, representation="raw", rewards="scoring", other_config_options=options
+    )
+
+
+class Policy(Protocol):
+    """Chooses the action of our one controlled player; `start` is called at every reset."""
+
+    def start(self) -> None: ...
+
+    def act(self, step: int, obs: Observation) -> int: ...
+
+
+class Constant:
+    """The same action every step: `idle` (0), `builtin_ai` (19), or a button held down."""
+
+    def __init__(self, action: int) -> None:
+        self.action = action
+
+    def start(self) -> None:
+        pass
+
+    def act(self, step: int, obs: Observation) -> int:
+        return self.action
+
+
+class RandomActions:
+    """GRF's random agent: `sample()` of ONE seeded copy of the env's action space for the whole
+    case (GRF's `env.action_space` is a new object at every read, so the measurement kept one)."""
+
+    def __init__(self, env: FootballEnv, seed: int) -> None:
+        self.space = copy.deepcopy(env.action_space)
+        self.space.seed(seed)
+
+    def start(self) -> None:
+        pass
+
+    def act(self, step: int, obs: Observation) -> int:
+        return int(self.space.sample())
+
+
+class Scripted:
+    """The actions of `first` on steps 1, 2, …, then `then` every step (idle by default)."""
+
+    def __init__(self, first: list[int], then: int = IDLE) -> None:
+        self.first = list(first)
+        self.then = then
+
+    def start(self) -> None:
+        pass
+
+    def act(self, step: int, obs: Observation) -> int:
+        return self.first[step - 1] if step <= len(self.first) else self.then
+
+
+class OnceOwned:
+    """Idle until our controlled player owns the ball, then `action` for `times` steps, then idle
+    again."""
+
+    def __init__(self, action: int, times: int = 1) -> None:
+        self.action = action
+        self.times = times
+        self.pressed = 0
+
+    def start(self) -> None:
+        self.pressed = 0
+
+    def act(self, step: int, obs: Observation) -> int:
+        if self.pressed < self.times and (self.pressed > 0 or owns_ball(obs)):
+            self.pressed += 1
+            return self.action
+        return IDLE
+
+
+def owns_ball(obs: Observation) -> bool:
+    """Our controlled player has the ball."""
+    return bool(obs["ball_owned_team"] == 0 and obs["ball_owned_player"] == obs["active"])
+
+
+def make_policy(name: str, env: FootballEnv, seed: int) -> Policy:
+    """The reference's policies by name: random, idle, builtin_ai."""
+    if name == "random":
+        return RandomActions(env, seed)
+    if name == "idle":
+        return Constant(IDLE)
+    if name == "builtin_ai":
+        return Constant(BUILTIN_AI)
+    raise ValueError(f"unknown policy {name!r}")
+
+
+class EndTracker:
+    """GRF's end-of-episode state: the previous step's game_mode and the last known ball owner."""
+
+    def __init__(self) -> None:
+        self.previous_mode = -1
+        self.last_owner = -1
+
+    def classify(self, obs: Observation, reward: float) -> str:
+        """How the episode would end on this step (GRF's order); call once per step, in order."""
+        mode = int(obs["game_mode"])
+        owner = int(obs["ball_owned_team"])
+        if reward != 0:
+            end = "goal"
+        elif mode != NORMAL and self.previous_mode == NORMAL:
+            end = "out_of_play"
+        elif owner != -1 and self.last_owner != -1 and owner != self.last_owner:
+            end = "possession"
+        elif int(obs["steps_left"]) == 0:
+            end = "time_limit"
+        else:
+            end = "other"
+        self.previous_mode = mode
+        if owner != -1:
+            self.last_owner = owner
+        return end
+
+
+@dataclass
+class MatchStats:
+    """What a full match is made of, counted from raw observations (both teams, per match).
+
+    A restart is an entry into its game_mode; a completed pass is ball ownership moving between
+    two players of one team in normal play, a turnover ownership moving to the other team in
+    normal play; possession is our share of the steps on which a team owns the ball; width is the
+    median, over normal-play owned steps, of the y-span of the outfield players of the team in
+    possession.
+    """
+
+    restarts: dict[str, int] = field(default_factory=lambda: dict.fromkeys(RESTARTS.values(), 0))
+    yellow_cards: int = 0
+    passes: int = 0
+    turnovers: int = 0
+    owned_steps: list[int] = field(default_factory=lambda: [0, 0])
+    widths: list[float] = field(default_factory=list)
+    _mode: int = -1
+    _cards: int = 0
+    _owner: tuple[int, int] | None = None
+
+    def start(self, obs: Observation) -> None:
+        self._mode = int(obs["game_mode"])
+        self._cards = _card_count(obs)
+
+    def update(self, obs: Observation) -> None:
+        mode = int(obs["game_mode"])
+        if mode != self._mode and mode in RESTARTS:
+            self.restarts[RESTARTS[mode]] += 1
+        self._mode = mode
+        cards = _card_count(obs)
+        self.yellow_cards += max(0, cards - self._cards)
+        self._cards = cards
+        team = int(obs["ball_owned_team"])
+        if team == -1:
+            return
+        self.owned_steps[team] += 1
+        owner = (team, int(obs["ball_owned_player"]))
+        if mode == NORMAL and self._owner is not None and owner != self._owner:
+            if owner[0] == self._owner[0]:
+                self.passes += 1
+            else:
+                self.turnovers += 1
+        self._owner = owner
+        if mode == NORMAL:
+            self.widths.append(_outfield_span(obs, "left_team" if team == 0 else "right_team"))
+
+    def summary(self) -> dict[str, float]:
+        owned = sum(self.owned_steps)
+        return {
+            **{name: float(count) for name, count in self.restarts.items()},
+            "yellow_cards": float(self.yellow_cards),
+            "passes": float(self.passes),
+            "turnovers": float(self.turnovers),
+            "possession": self.owned_steps[0] / owned if owned else float("nan"),
+            "width_m": statistics.median(self.widths) if self.widths else float("nan"),
+        }
+
+
+def _card_count(obs: Observation) -> int:
+    return int(obs["left_team_yellow_card"].sum() + obs["right_team_yellow_card"].sum())
+
+
+def _outfield_span(obs: Observation, team: str) -> float:
+    """Metres between the two outermost (in y) active outfield players of `team`."""
+    ys = [
+        float(position[1])
+        for position, role, active in zip(
+            obs[team], obs[f"{team}_roles"], obs[f"{team}_active"], strict=True
+        )
+        if int(role) != GOALKEEPER_ROLE and active
+    ]
+    return (max(ys) - min(ys)) * METRES_PER_Y if ys else 0.0
+
+
+@dataclass
+class Episode:
+    """One episode's outcome."""
+
+    steps: int
+    end: str
+    goals_for: int
+    goals_against: int
+    max_ball_x: float
+    first_goal_step: int | None
+    stats: dict[str, float] | None = None
+
+
+def run_episode(
+    env: FootballEnv,
+    policy: Policy,
+    with_stats: bool = False,
+    on_step: Callable[[int, Observation], None] | None = None,
+) -> Episode:
+    """Plays one episode from `env.reset()` to `done`; `on_step(step, obs)` sees each
+    observation, the reset one as step 0."""
+    obs = env.reset()[0]
+    policy.start()
+    tracker = EndTracker()
+    stats = MatchStats() if with_stats else None
+    if stats is not None:
+        stats.start(obs)
+    if on_step is not None:
+        on_step(0, obs)
+    goals_for = goals_against = steps = 0
+    first_goal: int | None = None
+    max_x = float(obs["ball"][0])
+    end = "other"
+    done = False
+    while not done:
+        steps += 1
+        observations, reward, done, _ = env.step(policy.act(steps, obs))
+        obs = observations[0]
+        end = tracker.classify(obs, reward)
+        if reward > 0:
+            goals_for += 1
+            first_goal = first_goal or steps
+        elif reward < 0:
+            goals_against += 1
+        max_x = max(max_x, float(obs["ball"][0]))
+        if stats is not None:
+            stats.update(obs)
+        if on_step is not None:
+            on_step(steps, obs)
+    return Episode(
+        steps=steps,
+        end=end,
+        goals_for=goals_for,
+        goals_against=goals_against,
+        max_ball_x=max_x,
+        first_goal_step=first_goal,
+        stats=stats.summary() if stats is not None else None,
+    )
+
+
+def run_episodes(
+    scenario: str,
+    policy: str | Callable[[FootballEnv], Policy],
+    n: int,
+    seed: int,
+    with_stats: bool = False,
+) -> list[Episode]:
+    """n episodes in a row of one env; `policy` is a reference name or a factory given the env."""
+    builtin = policy == "builtin_ai"
+    env = make_env(scenario, seed, builtin_ai=builtin)
+    chosen = make_policy(policy, env, seed) if isinstance(policy, str) else policy(env)
+    return [run_episode(env, chosen, with_stats=with_stats) for _ in range(n)]

@@ -68,10 +68,23 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
         }
     }
 
-    // GRF's rush rule: against a carrier whose shooting point no team-mate covers, come out all
-    // the way to the ball.
-    if let Some(carrier) = view.owner.filter(|&o| view.players[o].side != me.side)
-        && !covered(view, g, frame, frame.vec2(view.players[carrier].position))
+    // GRF's rush rule: against a carrier (or the opponent nearest a loose ball) whose shooting
+    // point no team-mate covers, come out all the way to the ball.
+    // With the ball loose, the threat is the opponent nearest to it.
+    let threat = match view.owner {
+        Some(o) if view.players[o].side != me.side => Some(view.players[o].position),
+        Some(_) => None,
+        // Loose: the opponent nearest to it, when they get there first.
+        None if analysis.chaser.is_some_and(|(_, ours, _)| ours <= analysis.opponent_time) => None,
+        None => view
+            .team(me.side.opponent())
+            .iter()
+            .filter(|p| p.active)
+            .min_by(|a, b| a.position.distance_squared(ball).total_cmp(&b.position.distance_squared(ball)))
+            .map(|p| p.position),
+    };
+    if let Some(threat) = threat
+        && !covered(view, g, frame, frame.vec2(threat))
     {
         let at_t = ball_t + (goal_t - ball_t).normalize_or(Vec2::NEG_X) * RUSH_SHORT_OF_BALL;
         return Plan::go(frame.vec2(at_t), me.max_speed, ball - me.position);

@@ -115,6 +115,11 @@ impl StickyState {
     /// The pass or shot button `kind` is down this step.
     fn press_button(&mut self, kind: KickKind, on_ball: bool) -> Press {
         match self.held {
+            Some(held) if held.kind == kind && held.fired && on_ball => {
+                // Still held after its kick, with the ball back at his feet: a new press.
+                self.held = Some(HeldButton { kind, gauge_ms: STEP_MS, fired: false });
+                Press::None
+            }
             Some(mut held) if held.kind == kind => {
                 if !held.fired && held.gauge_ms + 10 > FIRE_WHILE_HELD_MS {
                     // Held past 500 ms: the kick goes at this step's first tick.
@@ -214,9 +219,15 @@ mod tests {
         }
         // The sixth step of holding: the gauge passes 500 ms at its first tick.
         assert_eq!(s.apply(Action::Shot, true), Press::Kick(KickKind::Shot, input_power(KickKind::Shot, 510)));
-        assert_eq!(s.apply(Action::Shot, true), Press::None);
-        assert_eq!(s.apply(Action::Idle, true), Press::None);
+        assert_eq!(s.apply(Action::Shot, false), Press::None);
+        assert_eq!(s.apply(Action::Idle, false), Press::None);
         assert!(s.held.is_none());
+        // Held on past its kick until the ball is back at his feet: that is a new press.
+        for _ in 0..6 {
+            s.apply(Action::Shot, false);
+        }
+        assert_eq!(s.apply(Action::Shot, true), Press::None);
+        assert_eq!(s.held.map(|h| (h.gauge_ms, h.fired)), Some((100, false)));
     }
 
     #[test]

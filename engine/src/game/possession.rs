@@ -255,7 +255,11 @@ impl Match {
             if !p.active || p.touch_cooldown > 0 {
                 continue;
             }
-            let keeper_hands = p.is_keeper() && in_penalty_area(p.position.x, p.position.y, -p.side.attack_sign());
+            // Law 12: the keeper may not handle a ball a team-mate deliberately kicked to him (GRF's
+            // keeper plays such a ball with his feet).
+            let back_pass = self.pending_pass.is_some_and(|passer| self.players[passer].side == p.side);
+            let keeper_hands =
+                p.is_keeper() && !back_pass && in_penalty_area(p.position.x, p.position.y, -p.side.attack_sign());
             let (reach, height) = if keeper_hands {
                 (if p.dive_ticks > 0 { DIVE_REACH } else { HAND_REACH }, HAND_HEIGHT)
             } else if p.is_sliding() {

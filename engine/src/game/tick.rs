@@ -286,6 +286,9 @@ impl Match {
                 controls[g] = self.ball_control_step(g);
             }
         }
+        for (p, step) in self.players.iter_mut().zip(controls) {
+            p.controlling_ball = step.is_some();
+        }
         let fatigue_tick = self.in_play_ticks.is_multiple_of(FATIGUE_EVERY);
         for g in 0..self.players.len() {
             let theta = self.theta(g);
@@ -360,10 +363,9 @@ impl Match {
         let to = ball.xy() - me.position;
         let d2 = to.length_squared();
         // A ball already at his feet he leaves be, unless he is on his way to it.
-        let approaching = me.velocity.dot(to) > 0.3 * to.length();
         if ball.position.z > 0.5
             || d2 > BALL_CONTROL_RANGE * BALL_CONTROL_RANGE
-            || (d2 < AT_FEET * AT_FEET && !approaching)
+            || (d2 < AT_FEET * AT_FEET && !me.controlling_ball)
             || (ball.velocity.truncate() - me.velocity).length_squared() > 9.0
         {
             return None;

@@ -48,6 +48,9 @@ pub struct Player {
     /// A kick being wound up by the player on the ball, and the ticks until the ball leaves his
     /// foot (it never does if he loses the ball first).
     pub(crate) pending_kick: Option<(Kick, u16)>,
+    /// An agent's player is stepping to a loose ball by himself (GRF's automatic ball control).
+    #[serde(default)]
+    pub(crate) controlling_ball: bool,
 }
 
 /// Walking speed (m/s) with a direction and no modifier (grf.md §5.4).
@@ -80,6 +83,7 @@ impl Player {
             slide_ticks: 0,
             dive_ticks: 0,
             pending_kick: None,
+            controlling_ball: false,
         }
     }
 

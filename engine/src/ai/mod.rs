@@ -7,6 +7,7 @@
 //! ([`difficulty`]) sets reaction time, pressing reach and decision noise.
 
 pub mod ball_carrier;
+mod clearance;
 pub mod difficulty;
 pub mod goalkeeper;
 pub mod prediction;
@@ -95,6 +96,9 @@ pub struct Plan {
     /// Run through the target at full speed instead of slowing down to stop on it (chasing a
     /// ball).
     pub run_through: bool,
+    /// A kick to strike first time at the loose ball he is going for ([`clearance`]).
+    #[serde(default)]
+    pub first_time: Option<Kick>,
 }
 
 impl Plan {
@@ -190,6 +194,7 @@ impl TeamAi {
                 dribble: plan.dribble,
                 kick: plan.kick.take(),
                 slide: std::mem::take(&mut plan.slide),
+                first_time: plan.first_time,
             };
         }
     }
@@ -218,7 +223,7 @@ impl TeamAi {
             let ball = view.ball.xy();
             let difficulty = self.player_difficulty.get(i).copied().flatten().unwrap_or(self.difficulty);
             let difficulty = &difficulty;
-            let plan = if !p.active || p.lazy {
+            let mut plan = if !p.active || p.lazy {
                 Plan::go(p.position, 0.0, ball - p.position)
             } else if view.mode != GameMode::Normal {
                 set_piece::plan(view, g, &analysis, difficulty, rng)
@@ -235,6 +240,9 @@ impl TeamAi {
                 let d = target.distance(p.position);
                 Plan::go(target, if d > 10.0 { p.max_speed * 0.9 } else { WALK_SPEED }, ball - p.position)
             };
+            if view.mode == GameMode::Normal && p.active && !p.lazy {
+                plan.first_time = clearance::first_time(view, g, &analysis);
+            }
             self.plans[i] = plan;
         }
     }

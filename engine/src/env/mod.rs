@@ -142,6 +142,7 @@ fn sticky_input(sticky: &StickyState, press: Press, player: &crate::player::Play
             _ => None,
         },
         slide: press == Press::Slide,
+        first_time: None,
     }
 }
 

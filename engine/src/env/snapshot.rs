@@ -70,7 +70,7 @@ fn fnv(bytes: &[u8]) -> u64 {
 impl Snapshot {
     /// Version of the byte format written by [`Snapshot::to_bytes`]; bumped whenever the state's
     /// layout changes. Reading another version is an error.
-    pub const FORMAT_VERSION: u16 = 7;
+    pub const FORMAT_VERSION: u16 = 8;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {

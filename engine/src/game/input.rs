@@ -53,4 +53,9 @@ pub struct PlayerInput {
     pub kick: Option<Kick>,
     /// Start a sliding tackle in the movement direction (a goalkeeper in his area dives instead).
     pub slide: bool,
+    /// A kick to strike on the first touch of the loose ball he is going for, without first
+    /// taking it under control: GRF's AI queues its on-the-ball command while still running to the
+    /// ball, so the touch is the kick and the player never shows as its owner. Held while set.
+    #[serde(default)]
+    pub first_time: Option<Kick>,
 }

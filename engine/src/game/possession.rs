@@ -12,6 +12,8 @@ use crate::stats::Event;
 const FOOT_REACH: f32 = 0.7;
 /// Reach (m) for a ball moving slower than [`SLOW_BALL`] (m/s) relative to the player.
 const STILL_BALL_REACH: f32 = 1.15;
+/// GRF's possession test: a slow ball within this (m) of the point just ahead of a player.
+const POSSESSION_REACH: f32 = 1.0;
 const SLOW_BALL: f32 = 3.0;
 /// Highest ball (m) an outfield player controls (head height).
 const FOOT_HEIGHT: f32 = 1.9;
@@ -112,6 +114,10 @@ impl Match {
             if roll < odds {
                 self.tackled(owner, q);
                 return;
+            }
+            if odds == 0.0 {
+                // No tackle attempted, so no trip: GRF's standing foul needs a tackling player.
+                continue;
             }
             let trip = fouls::trip_chance(&self.players[q], &self.players[owner], tackling);
             if roll < odds + trip {
@@ -258,13 +264,17 @@ impl Match {
             let back_pass = self.pending_pass.is_some_and(|passer| self.players[passer].side == p.side);
             let keeper_hands =
                 p.is_keeper() && !back_pass && in_penalty_area(p.position.x, p.position.y, -p.side.attack_sign());
+            let mut from = p.position;
             let (reach, height) = if keeper_hands {
                 (if p.dive_ticks > 0 { DIVE_REACH } else { HAND_REACH }, HAND_HEIGHT)
             } else if p.is_sliding() {
                 (SLIDE_REACH, FOOT_HEIGHT)
             } else if (ball.velocity.truncate() - p.velocity).length_squared() < SLOW_BALL * SLOW_BALL {
-                // A slow ball is easy to step to: GRF gives possession within about a metre.
-                (STILL_BALL_REACH, FOOT_HEIGHT)
+                // A slow ball is easy to step to: GRF's possession test, a metre from the point
+                // 0.05 s of his run and 0.1 m along his facing ahead of him (so a player walking
+                // away from a ball leaves it, and one walking onto it takes it).
+                from = p.position + p.velocity * 0.05 + p.facing * 0.1;
+                (POSSESSION_REACH, FOOT_HEIGHT)
             } else {
                 (FOOT_REACH, FOOT_HEIGHT)
             };
@@ -277,7 +287,10 @@ impl Match {
                 // `Match::take_to_play`).
                 continue;
             }
-            let d2 = p.position.distance_squared(ball.xy());
+            let d2 = from.distance_squared(ball.xy());
+            if self.agent_driven[g] && !keeper_hands && !self.stick_towards(g, ball.xy() - p.position) {
+                continue;
+            }
             if d2 < reach * reach && d2 < best_d2 {
                 best_d2 = d2;
                 best = Some((g, keeper_hands));
@@ -300,6 +313,15 @@ impl Match {
         self.last_touch = Some(g);
         self.touched(g);
         if self.whistle.is_some() {
+            return;
+        }
+        if let Some(kick) = self.inputs[g].first_time
+            && !keeper_hands
+            && !self.players[g].is_sliding()
+        {
+            // A first-time kick: the touch is the kick; he never has the ball at his feet.
+            self.inputs[g].first_time = None;
+            self.execute_kick(g, kick);
             return;
         }
         let p = &self.players[g];

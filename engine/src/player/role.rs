@@ -1,4 +1,4 @@
-//! Player roles, numbered as GRF's `e_PlayerRole` (shared/reference/grf.md §3.3).
+//! Player roles, numbered as GRF's `e_PlayerRole` (GRF 2.10's raw observation, `left_team_roles`).
 
 use serde::{Deserialize, Serialize};
 
@@ -63,6 +63,19 @@ impl Role {
     /// Whether the role is a forward's or attacking midfielder's: these make runs in behind.
     pub fn is_attacker(self) -> bool {
         matches!(self, Role::CF | Role::AM | Role::LM | Role::RM)
+    }
+
+    /// How attacking the role plays on the ball, in [0, 1]: GRF 2.10's mind-set per role (GK and
+    /// CB 0, full backs and DM 0.25, wide and central midfield 0.5, AM 0.75, CF 1). Below 0.25 a
+    /// player is prone to clear a contested ball first time rather than control it.
+    pub fn mind_set(self) -> f32 {
+        match self {
+            Role::GK | Role::CB => 0.0,
+            Role::LB | Role::RB | Role::DM => 0.25,
+            Role::CM | Role::LM | Role::RM => 0.5,
+            Role::AM => 0.75,
+            Role::CF => 1.0,
+        }
     }
 }
 

@@ -61,10 +61,13 @@ pub fn from_behind(tackler: &Player, carrier: &Player) -> bool {
 }
 
 /// Chance this tick that a standing challenge by `tackler` (tackling skill `skill` in [0, 1])
-/// trips `carrier`.
+/// trips `carrier`. It grows with the carrier's pace, from none for a carrier standing still to
+/// full at a sprint: in GRF 2.10 a trip comes from a collision, and a player's own speed is what
+/// most unbalances him in one.
 #[inline]
 pub fn trip_chance(tackler: &Player, carrier: &Player, skill: f32) -> f32 {
-    TRIP_CHANCE * (1.2 - skill) * if from_behind(tackler, carrier) { 2.0 } else { 1.0 }
+    let pace = (carrier.velocity.length() / crate::player::SPRINT_SPEED).min(1.0);
+    TRIP_CHANCE * pace * (1.2 - skill) * if from_behind(tackler, carrier) { 2.0 } else { 1.0 }
 }
 
 /// Severity of a trip from a standing challenge; `roll` uniform in [0, 1).
@@ -159,7 +162,12 @@ mod tests {
         let reckless = sliding_severity(&behind, &carrier, ball, 0.3, 0.9);
         assert!(clean < FOUL_SEVERITY, "{clean}");
         assert!(reckless > 1.4, "{reckless}");
-        assert!(trip_chance(&behind, &carrier, 0.5) > trip_chance(&front, &carrier, 0.5));
+        // A carrier standing still is not tripped; one on the move is, worse from behind.
+        assert_eq!(trip_chance(&behind, &carrier, 0.5), 0.0);
+        let mut running = carrier.clone();
+        running.velocity = Vec2::new(5.0, 0.0);
+        assert!(trip_chance(&behind, &running, 0.5) > trip_chance(&front, &running, 0.5));
+        assert!(trip_chance(&front, &running, 0.5) > 0.0);
         assert!(standing_severity(&front, &carrier, 0.0) >= FOUL_SEVERITY);
     }
 }

@@ -1,7 +1,8 @@
 //! How the ball is won and how keepers play, against GRF's measured behaviour (issue 15): a
 //! defender at a carrier's back does not get to the ball; a keeper with no team-mate covering rushes
 //! out at a carrier; in his own area he takes a dribbled ball with his hands and, alone, clears it
-//! the way he faces; two bodies on one spot part instead of drifting along together.
+//! the way he faces; two bodies on one spot part instead of drifting along together; a keeper meets
+//! a contested loose ball with a first-time clearance; an agent walking away from the ball leaves it.
 
 mod common;
 
@@ -64,4 +65,45 @@ fn two_keepers_on_one_spot_part_instead_of_drifting_together() {
     let theirs = env.game().team(Side::Right)[0].position.x;
     assert!(ours < -30.0, "our keeper drifted to x = {ours}");
     assert!(theirs > ours + 15.0, "their keeper is at x = {theirs}, ours at {ours}");
+}
+
+#[test]
+fn an_agents_player_walking_away_from_the_ball_leaves_it() {
+    // academy_run_to_score: the ball lies a metre in front of our CB. GRF (measured, random agent):
+    // a player whose first steps lead away from it often never touches it, and nobody owns it.
+    let mut env = common::env("academy_run_to_score", 0);
+    for step in 0..20 {
+        env.step(&[Action::Left]).unwrap();
+        let o = &env.observations()[0];
+        assert_ne!(o.ball_owned_team, 0, "step {step}: our player took the ball walking away from it");
+        assert!((o.ball[0] - 0.02).abs() < 0.01, "step {step}: the ball moved to {:?}", o.ball);
+    }
+}
+
+#[test]
+fn a_keeper_meeting_a_contested_loose_ball_clears_it_first_time() {
+    // academy_empty_goal: our CB's long pass goes back towards our keeper; the opponents' keeper,
+    // who starts at our goal and rushes out, meets it with our CB on his heels. GRF's keeper plays a
+    // contested ball he does not hold first time, high and away ("panic pass"), and never shows as
+    // its owner.
+    let mut env = common::env("academy_empty_goal", 3);
+    for _ in 0..5 {
+        env.step(&[Action::Idle]).unwrap();
+    }
+    env.step(&[Action::LongPass]).unwrap();
+    let mut highest_after_landing = 0.0f32;
+    let mut landed = false;
+    for step in 0..60 {
+        let out = env.step(&[Action::Idle]).unwrap();
+        let o = &env.observations()[0];
+        assert_ne!(o.ball_owned_team, 1, "step {step}: the opponents' keeper took the ball");
+        landed |= o.ball[2] < 0.5 && o.ball[0] < -0.1;
+        if landed {
+            highest_after_landing = highest_after_landing.max(o.ball[2]);
+        }
+        if out.terminated || out.truncated {
+            break;
+        }
+    }
+    assert!(highest_after_landing > 3.0, "cleared high: {highest_after_landing}");
 }

@@ -102,8 +102,15 @@ pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2
 /// difficulty: hit across the body, or at a speed far from a dribble's (GRF 2.10's shot model).
 /// In a deterministic match w = 0: every shot is the best case.
 fn shot_velocity(kicker: &Player, dir: Vec2, distance: f32, kick: &Kick, accuracy: f32, rng: &mut MatchRng) -> Vec3 {
-    // 26–36 m/s from the button's power, a little less for weaker shooters.
-    let speed = (26.0 + 10.0 * kick.power.clamp(0.0, 1.0).sqrt()) * (0.85 + 0.15 * accuracy);
+    // GRF's shot power: 31.5–45 m/s from the button's power, times how well the body is turned
+    // to the shot and how fast the shooter runs onto the ball (a standing shot loses 30 %), capped
+    // by the shooter's skill at 32–45 m/s.
+    let across = 0.5 * (kicker.facing.dot(dir) + 1.0);
+    let run = kicker.velocity.length();
+    let speed = (45.0 * (0.7 + 0.3 * kick.power.clamp(0.0, 1.0).sqrt()))
+        * (0.7 + 0.3 * libm::powf(across, 0.8))
+        * (0.7 + 0.3 * libm::powf((run / 8.0).min(1.0), 0.3));
+    let speed = speed.min(32.0 + 13.0 * accuracy);
     // The best case is struck low, GRF's 0.05 of lift, whatever the range: a shot from far dips,
     // bounces and rolls out its pace on the grass rather than looping in. Close in, a shot aimed
     // higher (a chip over a keeper, `kick.height`) gets the lift to reach it.
@@ -115,8 +122,6 @@ fn shot_velocity(kicker: &Player, dir: Vec2, distance: f32, kick: &Kick, accurac
     if !rng.noisy() {
         return best;
     }
-    let across = 0.5 * (kicker.facing.dot(dir) + 1.0);
-    let run = kicker.velocity.length();
     let pace = 1.0 - 0.4 * ((run - DRIBBLE_SPEED).abs() / SPRINT_SPEED).min(1.0);
     let difficulty = (1.0 - (0.4 + 0.6 * libm::powf(across, 0.8)) * pace).clamp(0.0, 1.0);
     let moving = if run > 0.5 { kicker.velocity / run } else { dir };

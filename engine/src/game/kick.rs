@@ -288,6 +288,30 @@ mod tests {
     }
 
     #[test]
+    fn a_shot_is_struck_harder_on_the_run_and_with_more_power() {
+        use crate::geometry::Side;
+        let kick = |power: f32| Kick {
+            kind: KickKind::Shot,
+            target: super::super::KickTarget::Direction(Vec2::X),
+            height: 0.6,
+            power,
+        };
+        let speed = |run: f32, power: f32| {
+            let mut shooter = player(Side::Left, 1, Vec2::new(20.0, 0.0));
+            shooter.facing = Vec2::X;
+            shooter.velocity = Vec2::new(run, 0.0);
+            let mut rng = MatchRng::new(3, 1, false);
+            shot_velocity(&shooter, Vec2::X, 32.5, &kick(power), 1.0, &mut rng).length()
+        };
+        // GRF (measured): a one-step press (power 0.15) by a standing CB leaves at about 26 m/s.
+        let standing = speed(0.0, 0.15);
+        assert!((standing - 25.7).abs() < 0.5, "{standing}");
+        // At a sprint he loses nothing of the 36.7 m/s; full power reaches the 45 m/s cap.
+        assert!((speed(8.0, 0.15) - 36.7).abs() < 0.5);
+        assert!((speed(8.0, 1.0) - 45.0).abs() < 0.5);
+    }
+
+    #[test]
     fn a_stick_shot_goes_where_the_stick_points_and_facing_goal_at_the_centre() {
         use crate::geometry::Side;
         for side in [Side::Left, Side::Right] {

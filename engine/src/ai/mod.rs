@@ -53,6 +53,8 @@ pub struct MatchView<'a> {
     pub owner_ticks: u32,
     /// Whether the offside law applies.
     pub offsides: bool,
+    /// Per player (global index): driven by an agent, so the AI cannot send him anywhere.
+    pub agent_driven: &'a [bool],
 }
 
 impl MatchView<'_> {

@@ -6,16 +6,19 @@ use glam::Vec2;
 
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::geometry::pitch::HALF_LENGTH;
-use crate::player::Player;
+use crate::player::{Player, WALK_SPEED};
 
 /// Where presser `p` runs to close down `carrier` with the ball at `ball` (m, global): a little
 /// ahead of him and goal-side, then, within 2.5 m, at the ball itself in front of him (standing
 /// off goal-side, a still carrier could shield it for ever). Shared with the `press` behaviour.
 pub(crate) fn close_down(p: &Player, carrier: &Player, ball: Vec2) -> Vec2 {
     if p.position.distance(carrier.position) < 2.5 {
-        if crate::game::duel_likeliness(p.position, carrier.position, ball) < 0.2 {
-            // Behind him, his body between us and the ball: stay on his back (GRF's defender does
-            // not run round a carrier; contact draws him round slowly, if at all).
+        if crate::game::duel_likeliness(p.position, carrier.position, ball) < 0.2
+            && carrier.velocity.length() < WALK_SPEED
+        {
+            // Behind a carrier who stands, his body between us and the ball: stay on his back
+            // (GRF's defender does not run round a still carrier; contact draws him round slowly,
+            // if at all). A carrier on the run he chases down to the ball and comes round.
             return carrier.position + (p.position - carrier.position).normalize_or_zero() * 0.8;
         }
         ball + (ball - carrier.position).normalize_or_zero() * 0.3
@@ -33,7 +36,12 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Diffic
     if ours {
         return None;
     }
-    let (chaser, _, meet) = analysis.chaser?;
+    let (mut chaser, _, meet) = analysis.chaser?;
+    if view.owner.is_some() && view.agent_driven.get(chaser) == Some(&true) {
+        // The team-mate nearest the carrier is an agent's player, whom the AI cannot send: the
+        // next one presses (GRF's AI hunts a carrier with the two players nearest him).
+        chaser = analysis.second.unwrap_or(chaser);
+    }
     if chaser == g {
         let loose = view.owner.is_none();
         if loose || p.position.distance(ball) <= difficulty.hunt_distance {

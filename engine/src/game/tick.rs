@@ -110,6 +110,7 @@ impl Match {
             tick: self.in_play_ticks,
             owner_ticks: self.owner_ticks,
             offsides: self.offsides,
+            agent_driven: &self.agent_driven,
         };
         for side in 0..2 {
             if behaviours && self.nobody_for_ai(side) {

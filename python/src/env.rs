@@ -58,7 +58,9 @@ pub(crate) fn info_dict<'py>(py: Python<'py>, info: &StepInfo) -> PyResult<Bound
     d.set_item("script_reward", info.script_reward)?;
     d.set_item("script_errors", info.script_errors)?;
     d.set_item("steps", info.steps)?;
-    d.set_item("episode", info.episode)?;
+    // Not "episode": Gymnasium's RecordEpisodeStatistics and Stable-Baselines3 reserve that key for
+    // episode statistics (a dict with "r", "l", "t") and fail on any other value.
+    d.set_item("episode_index", info.episode)?;
     d.set_item("lesson", info.lesson)?;
     Ok(d)
 }

@@ -160,3 +160,33 @@ def test_render_mode_none_renders_nothing() -> None:
     assert env.render() is None
     env.close()
     env.close()
+
+
+def test_record_episode_statistics_wraps_the_env_unchanged() -> None:
+    # Every CleanRL script and Stable-Baselines3's Monitor put their episode statistics under
+    # info["episode"]; the env must leave that key to them (issue 16, seam 1).
+    env = gymnasium.wrappers.RecordEpisodeStatistics(gymnasium.make(f"touchline/{DRILL}-v0"))
+    env.reset(seed=0)
+    for _ in range(2):
+        done, steps = False, 0
+        while not done:
+            _, _, terminated, truncated, info = env.step(env.action_space.sample())
+            steps += 1
+            done = terminated or truncated
+        assert info["episode"]["l"] == steps
+        assert "episode_index" in info
+        env.reset()
+
+
+def test_record_episode_statistics_around_a_gymnasium_vector_env() -> None:
+    envs = gymnasium.make_vec(f"touchline/{DRILL}-v0", num_envs=2, vectorization_mode="sync")
+    envs = gymnasium.wrappers.vector.RecordEpisodeStatistics(envs)
+    envs.reset(seed=0)
+    finished = 0
+    for _ in range(400):
+        _, _, terminated, truncated, infos = envs.step(envs.action_space.sample())
+        if "episode" in infos:
+            finished += int(infos["_episode"].sum())
+        if finished >= 2:
+            break
+    assert finished >= 2

@@ -4,7 +4,7 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use touchline_engine::obs::{FrameStack, encode_simple115, encode_simple115v2, encode_smm};
-use touchline_engine::{ActionSet, EngineError, Env, EnvConfig, Scenario, Snapshot, StepOutcome};
+use touchline_engine::{ActionSet, EngineError, Env, EnvConfig, Scenario, Snapshot, StepInfo, StepOutcome};
 use touchline_render::{PixelsEncoder, PixelsKind};
 
 /// Frames kept by `stacked=True` (GRF's FrameStack(4), grf.md §4.4).
@@ -152,6 +152,9 @@ pub(crate) struct EnvCore {
     frame_u8: Vec<u8>,
     /// The renderer of the pixels representations (the pitch painted once).
     pixels: Option<PixelsEncoder>,
+    /// The info of the last step that ended an episode (a vector env resets at once, and its
+    /// `final_info` still reports the finished episode's score).
+    pub(crate) final_info: StepInfo,
 }
 
 impl EnvCore {
@@ -175,6 +178,7 @@ impl EnvCore {
             stacks_f32,
             stacks_u8,
             frame_u8: vec![0; frame_len],
+            final_info: StepInfo::default(),
             pixels: match args.representation {
                 Representation::Pixels { width, height, gray } => {
                     let kind = if gray { PixelsKind::Gray } else { PixelsKind::Rgb };
@@ -218,7 +222,11 @@ impl EnvCore {
     }
 
     pub(crate) fn step(&mut self, actions: &[u32]) -> Result<StepOutcome, EngineError> {
-        self.env.step_indices(actions)
+        let outcome = self.env.step_indices(actions)?;
+        if outcome.terminated || outcome.truncated {
+            self.final_info = *self.env.info();
+        }
+        Ok(outcome)
     }
 
     /// Encodes every controller's observation into `out` (M × observation_len). `fresh` means

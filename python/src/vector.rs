@@ -4,6 +4,7 @@
 use numpy::{PyReadonlyArray2, PyReadwriteArray1, PyReadwriteArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use touchline_engine::StepInfo;
 
 use crate::core::{EnvArgs, EnvCore, ObsOut};
 use crate::errors::{engine_error, guard};
@@ -96,6 +97,30 @@ impl ObsElem for u8 {
     fn of(slot: &Slot) -> (&[u8], &[u8]) {
         (&slot.obs_u8, &slot.finals_u8)
     }
+}
+
+/// Columns of a vector env's info row: score left, score right, steps left, game mode, score
+/// reward, checkpoint reward, event reward, script reward, script errors, steps, episode index,
+/// lesson (the order `touchline/vector.py` reads them in).
+const INFO_COLUMNS: usize = 12;
+
+/// Writes `info` as one row of [`INFO_COLUMNS`].
+fn info_row(info: &StepInfo, row: &mut [f64]) {
+    let values = [
+        f64::from(info.score[0]),
+        f64::from(info.score[1]),
+        f64::from(info.steps_left),
+        f64::from(info.game_mode as u8),
+        f64::from(info.score_reward),
+        f64::from(info.checkpoint_reward),
+        f64::from(info.event_reward),
+        f64::from(info.script_reward),
+        f64::from(info.script_errors),
+        f64::from(info.steps),
+        info.episode as f64,
+        info.lesson as f64,
+    ];
+    row.copy_from_slice(&values);
 }
 
 /// One vector step's flat outputs (the caller's arrays).
@@ -291,6 +316,29 @@ impl PyVectorEnv {
                     }
                 }
             });
+            Ok(())
+        })
+    }
+
+    /// Writes each env's step info, one row per env of [`INFO_COLUMNS`] float64 columns: the
+    /// current one into `current` (for an env that just ended, its next episode's) and that of the
+    /// step that ended its last episode into `finals`.
+    fn infos(&self, mut current: PyReadwriteArray2<'_, f64>, mut finals: PyReadwriteArray2<'_, f64>) -> PyResult<()> {
+        guard(|| {
+            let n = self.num_envs();
+            if current.shape() != [n, INFO_COLUMNS] || finals.shape() != [n, INFO_COLUMNS] {
+                return Err(PyValueError::new_err(format!("info arrays must be float64 ({n}, {INFO_COLUMNS})")));
+            }
+            let contiguous = || PyValueError::new_err("arrays must be C-contiguous");
+            let current = current.as_slice_mut().map_err(|_| contiguous())?;
+            let finals = finals.as_slice_mut().map_err(|_| contiguous())?;
+            let guards: Vec<_> = self.workers.iter().map(Worker::slot).collect();
+            let envs = self.envs.iter().chain(guards.iter().flat_map(|g| g.envs.iter()));
+            for ((e, row), final_row) in envs.zip(current.chunks_mut(INFO_COLUMNS)).zip(finals.chunks_mut(INFO_COLUMNS))
+            {
+                info_row(e.env.info(), row);
+                info_row(&e.final_info, final_row);
+            }
             Ok(())
         })
     }

@@ -50,19 +50,28 @@ def test_equals_single_envs_with_autoreset(representation: str, num_threads: int
         actions = rng.integers(19, size=n)
         obs, rewards, terminated, truncated, infos = envs.step(actions)
         for i, env in enumerate(singles):
-            single_obs, reward, term, trunc, _ = env.step(int(actions[i]))
+            single_obs, reward, term, trunc, single_info = env.step(int(actions[i]))
             assert (terminated[i], truncated[i]) == (term, trunc)
             assert rewards[i] == np.float32(reward)
             if term or trunc:
-                # Gymnasium's same-step autoreset keys carry the episode's last observation.
+                # Gymnasium's same-step autoreset keys carry the episode's last observation and
+                # info: its final score survives the reset.
                 assert infos["_final_obs"][i] and infos["_final_info"][i]
                 np.testing.assert_array_equal(infos["final_obs"][i], single_obs)
+                final = infos["final_info"]
+                assert final["_score"][i] and list(final["score"][i]) == single_info["score"]
+                assert final["steps"][i] == single_info["steps"]
+                assert final["score_reward"][i] == np.float32(single_info["score_reward"])
                 episodes_ended += 1
-                # The vector env has already reset: same first observation.
-                single_obs, _ = env.reset()
+                # The vector env has already reset: same first observation and info.
+                single_obs, single_info = env.reset()
             else:
-                assert not infos or not infos["_final_obs"][i]
+                assert "_final_obs" not in infos or not infos["_final_obs"][i]
             np.testing.assert_array_equal(obs[i], single_obs)
+            # The same info as the single env's (a reset's info has fewer keys than a step's).
+            for key in ("steps_left", "game_mode", "steps", "episode_index"):
+                if key in single_info:
+                    assert infos["_" + key][i] and infos[key][i] == single_info[key], key
     assert episodes_ended >= n, "the test should cover autoresets"
 
 
@@ -128,3 +137,25 @@ def test_gymnasium_make_vec_uses_the_rust_vector_env() -> None:
     sync_obs, _ = sync.reset(seed=4)
     np.testing.assert_array_equal(obs, sync_obs)  # Gymnasium seeds sub-env i with seed + i too
     sync.close()
+
+
+def test_record_episode_statistics_around_the_vector_env() -> None:
+    # CleanRL's scripts wrap their vector env in this: it must find the episodes' ends and leave
+    # the env's own per-match keys alone (issue 16, seams 1 and 2).
+    import gymnasium
+
+    envs = gymnasium.wrappers.vector.RecordEpisodeStatistics(
+        touchline.vector.make(DRILL, num_envs=2, seed=0)
+    )
+    envs.reset(seed=0)
+    finished = 0
+    for _ in range(400):
+        _, _, _, _, infos = envs.step(envs.action_space.sample())
+        assert infos["score"].shape == (2, 2)
+        if "episode" in infos:
+            finished += int(infos["_episode"].sum())
+            ended = infos["_episode"]
+            assert (infos["final_info"]["steps"][ended] == infos["episode"]["l"][ended]).all()
+        if finished >= 2:
+            break
+    assert finished >= 2

@@ -155,6 +155,9 @@ class VectorEnv:
     def observation_shape(self) -> tuple[int, ...]: ...
     @property
     def observation_dtype(self) -> str: ...
+    def infos(self, current: npt.NDArray[np.float64], finals: npt.NDArray[np.float64]) -> None:
+        """Writes each match's info row (12 float64 columns), now and at its last episode's end."""
+        ...
     def reset(self, observations: npt.NDArray[Any], seed: int | None = None) -> None:
         """Resets every env, writing observations into `observations` (num_envs, M, *shape)."""
     def step(

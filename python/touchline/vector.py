@@ -48,9 +48,13 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         representation, rewards, stacked, seed, channel_dimensions, action_set, render_mode: as
             in `touchline.make`. `seed=None` draws a random seed.
 
-    When matches end, `infos` holds Gymnasium's same-step keys: `final_obs` (object array, the
-    last observation of each match that ended, None elsewhere), `final_info` (object array of
-    dicts) and the masks `_final_obs` / `_final_info`. Otherwise `infos` is empty.
+    `infos` follows Gymnasium 1.x's vector layout: every key of a single env's info (`score`
+    int64 (num_envs, 2), `steps_left`, `game_mode`, `score_reward`, `checkpoint_reward`,
+    `event_reward`, `script_reward`, `script_errors`, `steps`, `episode_index`, `lesson`; one entry
+    per match) with its mask `_key`. For a match that just ended these describe its next episode;
+    the finished one is in Gymnasium's same-step keys: `final_obs` (object array, the last
+    observation of each match that ended, None elsewhere), `final_info` (a dict of the same
+    batched keys, zero where no match ended, with their masks) and `_final_obs` / `_final_info`.
     """
 
     def __init__(
@@ -127,6 +131,9 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         self._truncated = np.zeros(n, dtype=np.bool_)
         self._actions = np.zeros(n, dtype=np.int64)
         self._final_observations = np.zeros((n, *shape), dtype=dtype)
+        self._info_rows = np.zeros((n, _INFO_COLUMNS), dtype=np.float64)
+        self._final_info_rows = np.zeros((n, _INFO_COLUMNS), dtype=np.float64)
+        self._every_env = np.ones(n, dtype=np.bool_)
         # The extension's layout has a controller axis of size 1: views, no copies.
         self._observations_m = self._observations.reshape(n, 1, *shape)
         self._rewards_m = self._rewards.reshape(n, 1)
@@ -149,7 +156,8 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         else:
             self._core.reset(self._observations_m, _arguments.checked_seed(seed))
         observations = self._observations.copy() if self.copy else self._observations
-        return observations, {}
+        self._core.infos(self._info_rows, self._final_info_rows)
+        return observations, _info_dict(self._info_rows, self._every_env)
 
     def step(
         self, actions: Any
@@ -188,24 +196,49 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         return self._observations, self._rewards, self._terminated, self._truncated, infos
 
     def _final_infos(self) -> dict[str, Any]:
-        """Gymnasium's same-step autoreset keys for the matches that just ended."""
+        """Every match's info, and Gymnasium's same-step autoreset keys for those that ended."""
+        self._core.infos(self._info_rows, self._final_info_rows)
+        infos = _info_dict(self._info_rows, self._every_env)
         done = self._terminated | self._truncated
         if not done.any():
-            return {}
+            return infos
         final_obs = np.full(self.num_envs, None, dtype=object)
-        final_info = np.full(self.num_envs, None, dtype=object)
         for i in np.flatnonzero(done):
             final_obs[i] = self._final_observations[i].copy()
-            final_info[i] = {}
-        return {
-            "final_obs": final_obs,
-            "_final_obs": done.copy(),
-            "final_info": final_info,
-            "_final_info": done.copy(),
-        }
+        rows = np.where(done[:, None], self._final_info_rows, 0.0)
+        infos["final_obs"] = final_obs
+        infos["_final_obs"] = done.copy()
+        infos["final_info"] = _info_dict(rows, done)
+        infos["_final_info"] = done.copy()
+        return infos
 
     def close_extras(self, **kwargs: Any) -> None:
         """Nothing to release: the matches are freed with the object."""
+
+
+#: The per-match info keys after `score`, in the extension's column order, with their dtypes.
+_INFO_SCALARS = (
+    ("steps_left", np.int64),
+    ("game_mode", np.int64),
+    ("score_reward", np.float32),
+    ("checkpoint_reward", np.float32),
+    ("event_reward", np.float32),
+    ("script_reward", np.float32),
+    ("script_errors", np.int64),
+    ("steps", np.int64),
+    ("episode_index", np.int64),
+    ("lesson", np.int64),
+)
+_INFO_COLUMNS = 2 + len(_INFO_SCALARS)
+
+
+def _info_dict(rows: np.ndarray, mask: np.ndarray) -> dict[str, Any]:
+    """Gymnasium 1.x's vector info layout: each key batched over the matches, `_key` its mask."""
+    infos: dict[str, Any] = {"score": rows[:, 0:2].astype(np.int64), "_score": mask.copy()}
+    for column, (key, dtype) in enumerate(_INFO_SCALARS, start=2):
+        infos[key] = rows[:, column].astype(dtype)
+        infos["_" + key] = mask.copy()
+    return infos
 
 
 def make(

@@ -249,8 +249,10 @@ impl PyVectorEnv {
             } else {
                 num_threads
             };
-            // One contiguous run per thread; the calling thread keeps the first.
-            let run = num_envs.div_ceil(threads.max(1));
+            // One contiguous run per thread, at most one thread per env; the calling thread keeps
+            // the first run.
+            let threads = threads.clamp(1, num_envs.max(1));
+            let run = num_envs.div_ceil(threads);
             let mut rest = envs.split_off(run.min(num_envs));
             let mut workers = Vec::new();
             while !rest.is_empty() {

@@ -1,6 +1,9 @@
 //! A worker thread that owns a run of envs and steps them on request. Handing work to a sleeping
 //! pool thread costs tens of microseconds, as much as stepping a dozen Academy envs, so the worker
-//! spins for a short while after each step waiting for the next one, and only then parks.
+//! waits a short while after each step for the next one, and only then parks. Both sides wait
+//! politely: a short busy spin, then yielding or parking, so that on a machine whose other cores
+//! are busy the thread that has work gets the core (a pure spin there made two threads several
+//! times slower than one).
 
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard};
@@ -11,8 +14,11 @@ use touchline_engine::EngineError;
 
 use crate::core::{EnvCore, ObsOut};
 
-/// How long an idle worker spins before parking.
+/// How long an idle worker waits for the next step before parking; after [`BUSY_SPIN`] it yields
+/// its core while it waits.
 const SPIN: Duration = Duration::from_micros(200);
+/// How long either side busy-spins before yielding (worker) or parking (caller).
+const BUSY_SPIN: Duration = Duration::from_micros(20);
 
 /// What the worker owns, and the results of its last job. Outputs are laid out like the caller's
 /// arrays (env-major), for a straight copy.
@@ -33,9 +39,13 @@ struct Shared {
     slot: Mutex<Slot>,
     /// Jobs requested so far; the worker runs one per increment.
     requested: AtomicU64,
+    /// Jobs claimed so far, by the worker or by a caller that found one not yet started.
+    claimed: AtomicU64,
     /// Jobs finished so far.
     finished: AtomicU64,
     exit: AtomicBool,
+    /// The caller parked in [`Worker::wait`], to wake when a job finishes.
+    waiter: Mutex<Option<std::thread::Thread>>,
 }
 
 /// A thread stepping its own envs.
@@ -104,8 +114,10 @@ impl Worker {
         let shared = Arc::new(Shared {
             slot: Mutex::new(Slot::new(envs)),
             requested: AtomicU64::new(0),
+            claimed: AtomicU64::new(0),
             finished: AtomicU64::new(0),
             exit: AtomicBool::new(false),
+            waiter: Mutex::new(None),
         });
         let inner = Arc::clone(&shared);
         let handle = std::thread::Builder::new().name("touchline-vector".into()).spawn(move || run(&inner))?;
@@ -129,15 +141,31 @@ impl Worker {
     /// Waits until the requested step is done.
     pub(crate) fn wait(&self) {
         let target = self.shared.requested.load(Ordering::Acquire);
-        let mut spins = 0u32;
-        while self.shared.finished.load(Ordering::Acquire) < target {
-            spins += 1;
-            if spins < 1 << 16 {
-                std::hint::spin_loop();
-            } else {
-                std::thread::yield_now();
-            }
+        // A job the worker has not started yet (its core busy elsewhere) the caller runs itself:
+        // with work stealing, threads never make a step slower than one thread would.
+        if target > 0
+            && self.shared.claimed.compare_exchange(target - 1, target, Ordering::AcqRel, Ordering::Acquire).is_ok()
+        {
+            run_job(&self.shared);
+            self.shared.finished.store(target, Ordering::Release);
+            return;
         }
+        let finished = || self.shared.finished.load(Ordering::Acquire) >= target;
+        let since = Instant::now();
+        while !finished() {
+            if since.elapsed() < BUSY_SPIN {
+                std::hint::spin_loop();
+                continue;
+            }
+            // Park until the worker wakes us; registered before the last check, so a job that
+            // finishes in between still unparks (or the check sees it).
+            *lock(&self.shared.waiter) = Some(std::thread::current());
+            if finished() {
+                break;
+            }
+            std::thread::park_timeout(Duration::from_millis(1));
+        }
+        lock(&self.shared.waiter).take();
     }
 }
 
@@ -160,24 +188,42 @@ fn run(shared: &Shared) {
             if shared.exit.load(Ordering::Acquire) {
                 return;
             }
-            if idle_since.elapsed() < SPIN {
+            let idle = idle_since.elapsed();
+            if idle < BUSY_SPIN {
                 std::hint::spin_loop();
+            } else if idle < SPIN {
+                std::thread::yield_now();
             } else {
                 std::thread::park_timeout(Duration::from_millis(50));
             }
         }
         let target = shared.requested.load(Ordering::Acquire);
         while done < target {
-            let mut slot = shared.slot.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-            // A panic inside the engine must not kill the thread silently: report it as the
-            // job's failure and stay alive.
-            let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| slot.step()));
-            if result.is_err() {
-                slot.error = Some(EngineError::InvalidConfig { reason: "internal error in a vector worker".into() });
+            let job = done + 1;
+            // The caller may have taken the job already; then it also marks it finished.
+            if shared.claimed.compare_exchange(done, job, Ordering::AcqRel, Ordering::Acquire).is_ok() {
+                run_job(shared);
+                shared.finished.store(job, Ordering::Release);
+                if let Some(waiter) = lock(&shared.waiter).take() {
+                    waiter.unpark();
+                }
             }
-            drop(slot);
-            done += 1;
-            shared.finished.store(done, Ordering::Release);
+            done = job;
         }
     }
+}
+
+/// Steps the slot's envs once. A panic inside the engine must not kill the thread silently or
+/// reach Python: it is reported as the job's failure.
+fn run_job(shared: &Shared) {
+    let mut slot = lock(&shared.slot);
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| slot.step()));
+    if result.is_err() {
+        slot.error = Some(EngineError::InvalidConfig { reason: "internal error in a vector worker".into() });
+    }
+}
+
+/// Locks `m`, through a poisoned lock too (a panic elsewhere leaves the data usable here).
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
 }

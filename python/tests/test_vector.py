@@ -159,3 +159,22 @@ def test_record_episode_statistics_around_the_vector_env() -> None:
         if finished >= 2:
             break
     assert finished >= 2
+
+
+@pytest.mark.parametrize("num_threads", [3, 8])
+def test_more_threads_than_matches_is_the_same_game(num_threads: int) -> None:
+    # More threads than matches run one per match (the others are not started), and a worker's
+    # step taken over by the calling thread changes nothing: the trajectories are the same.
+    rng = np.random.default_rng(1)
+    actions = rng.integers(19, size=(150, 3))
+    results = []
+    for threads in (1, num_threads):
+        envs = touchline.vector.make(DRILL, num_envs=3, num_threads=threads, seed=2)
+        obs, _ = envs.reset(seed=2)
+        trace = [obs]
+        for a in actions:
+            obs, rewards, terminated, truncated, _ = envs.step(a)
+            trace += [obs, rewards, terminated, truncated]
+        results.append(trace)
+    for x, y in zip(*results):
+        np.testing.assert_array_equal(x, y)

@@ -41,7 +41,10 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
     Args:
         scenario: a stdlib name or the path of a compiled `.json` scenario.
         num_envs: number of matches.
-        num_threads: worker threads; 0 uses one per core.
+        num_threads: threads stepping the matches, the calling one included, at most one per
+            match (more are not started); 0 uses one per core. A step whose worker has not
+            started yet, its core busy elsewhere, is done by the calling thread, so threads do
+            not make a loaded machine slower than one thread.
         copy: True (the default, as Gymnasium's own vector envs) returns fresh arrays from every
             `reset` and `step`; False returns the preallocated buffers themselves, which the next
             call overwrites — faster, but copy whatever you keep.

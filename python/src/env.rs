@@ -15,7 +15,7 @@ use crate::errors::{engine_error, guard};
 type StepResult<'py> = (Bound<'py, PyAny>, Bound<'py, PyArray1<f32>>, bool, bool, Bound<'py, PyDict>);
 
 /// One match: the Rust `Env` plus an observation encoder (see `_touchline.pyi`).
-#[pyclass(module = "touchline._touchline", name = "Env", unsendable)]
+#[pyclass(module = "touchline._touchline", name = "Env")]
 pub(crate) struct PyEnv {
     core: EnvCore,
     actions: Vec<u32>,

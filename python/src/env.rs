@@ -18,9 +18,24 @@ type StepResult<'py> = (Bound<'py, PyAny>, Bound<'py, PyArray1<f32>>, bool, bool
 #[pyclass(module = "touchline._touchline", name = "Env")]
 pub(crate) struct PyEnv {
     core: EnvCore,
+    /// The constructor's arguments, to rebuild the env when it is unpickled.
+    init: InitArgs,
     actions: Vec<u32>,
     /// The renderer of `render()`, made at the first call (and again for another size).
     renderer: Option<Renderer>,
+}
+
+/// What an `Env` was made with (see [`PyEnv::__getnewargs_ex__`]).
+struct InitArgs {
+    scenario: String,
+    representation: String,
+    left_agents: usize,
+    right_agents: usize,
+    rewards: String,
+    action_set: String,
+    seed: u64,
+    stacked: bool,
+    channel_dimensions: (usize, usize),
 }
 
 /// Reads one action index per controller from an int, a sequence or a numpy array.
@@ -117,7 +132,18 @@ impl PyEnv {
                 channel_dimensions,
             )?;
             let core = EnvCore::new(&args, seed).map_err(engine_error)?;
-            Ok(PyEnv { core, actions: Vec::new(), renderer: None })
+            let init = InitArgs {
+                scenario: scenario.to_owned(),
+                representation: representation.to_owned(),
+                left_agents,
+                right_agents,
+                rewards: rewards.to_owned(),
+                action_set: action_set.to_owned(),
+                seed,
+                stacked,
+                channel_dimensions,
+            };
+            Ok(PyEnv { core, init, actions: Vec::new(), renderer: None })
         })
     }
 
@@ -199,6 +225,31 @@ impl PyEnv {
     /// Restores a state from `get_state` of an env built with the same arguments.
     fn set_state(&mut self, state: &[u8]) -> PyResult<()> {
         guard(|| self.core.restore_bytes(state).map_err(engine_error))
+    }
+
+    /// Pickling (protocol 2 and up): the constructor's arguments ...
+    fn __getnewargs_ex__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyTuple>, Bound<'py, PyDict>)> {
+        let i = &self.init;
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("representation", &i.representation)?;
+        kwargs.set_item("left_agents", i.left_agents)?;
+        kwargs.set_item("right_agents", i.right_agents)?;
+        kwargs.set_item("rewards", &i.rewards)?;
+        kwargs.set_item("action_set", &i.action_set)?;
+        kwargs.set_item("seed", i.seed)?;
+        kwargs.set_item("stacked", i.stacked)?;
+        kwargs.set_item("channel_dimensions", i.channel_dimensions)?;
+        Ok((PyTuple::new(py, [&i.scenario])?, kwargs))
+    }
+
+    /// ... and the episode's state, so an unpickled env goes on where this one is (in another
+    /// process too: SuperSuit's and RLlib's workers).
+    fn __getstate__<'py>(&self, py: Python<'py>) -> Bound<'py, PyBytes> {
+        PyBytes::new(py, &self.core.state_bytes())
+    }
+
+    fn __setstate__(&mut self, state: &[u8]) -> PyResult<()> {
+        self.set_state(state)
     }
 
     /// The match drawn from above: a `(height, width, 3)` uint8 RGB image with the scoreboard,

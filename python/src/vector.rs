@@ -322,6 +322,29 @@ impl PyVectorEnv {
         })
     }
 
+    /// Every env's whole state (engine snapshot plus stacked frames), env order.
+    fn get_states<'py>(&self, py: Python<'py>) -> Vec<Bound<'py, pyo3::types::PyBytes>> {
+        let guards: Vec<_> = self.workers.iter().map(Worker::slot).collect();
+        let envs = self.envs.iter().chain(guards.iter().flat_map(|g| g.envs.iter()));
+        envs.map(|e| pyo3::types::PyBytes::new(py, &e.state_bytes())).collect()
+    }
+
+    /// Restores `get_states` of a vector env built with the same arguments.
+    fn set_states(&mut self, states: Vec<Vec<u8>>) -> PyResult<()> {
+        guard(|| {
+            let n = self.num_envs();
+            if states.len() != n {
+                return Err(PyValueError::new_err(format!("expected {n} states, got {}", states.len())));
+            }
+            let mut guards: Vec<_> = self.workers.iter().map(Worker::slot).collect();
+            let envs = self.envs.iter_mut().chain(guards.iter_mut().flat_map(|g| g.envs.iter_mut()));
+            for (e, state) in envs.zip(&states) {
+                e.restore_bytes(state).map_err(engine_error)?;
+            }
+            Ok(())
+        })
+    }
+
     /// Writes each env's step info, one row per env of [`INFO_COLUMNS`] float64 columns: the
     /// current one into `current` (for an env that just ended, its next episode's) and that of the
     /// step that ended its last episode into `finals`.

@@ -121,6 +121,11 @@ class Env:
             ValueError: corrupted or truncated bytes, another scenario, representation or
                 format version.
         """
+    def __getnewargs_ex__(self) -> tuple[tuple[str], dict[str, Any]]:
+        """Pickling: the constructor's arguments (with `__getstate__`, the episode's state)."""
+        ...
+    def __getstate__(self) -> bytes: ...
+    def __setstate__(self, state: bytes) -> None: ...
 
 @final
 class VectorEnv:
@@ -155,6 +160,16 @@ class VectorEnv:
     def observation_shape(self) -> tuple[int, ...]: ...
     @property
     def observation_dtype(self) -> str: ...
+    def get_states(self) -> list[bytes]:
+        """Every match's whole state, in match order (for pickling)."""
+        ...
+    def set_states(self, states: list[bytes]) -> None:
+        """Restores `get_states` of a vector env built with the same arguments.
+
+        Raises:
+            ValueError: another number of states, or bytes `Env.set_state` refuses.
+        """
+        ...
     def infos(self, current: npt.NDArray[np.float64], finals: npt.NDArray[np.float64]) -> None:
         """Writes each match's info row (12 float64 columns), now and at its last episode's end."""
         ...

@@ -79,6 +79,19 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
                 f"render_mode={render_mode!r} is not available for vector envs; render one env "
                 "with touchline.make(..., render_mode='rgb_array')"
             )
+        # Kept to rebuild the env when it is unpickled.
+        self._init_args: dict[str, Any] = {
+            "scenario": scenario,
+            "num_envs": num_envs,
+            "num_threads": num_threads,
+            "representation": representation,
+            "rewards": rewards,
+            "stacked": stacked,
+            "seed": seed,
+            "channel_dimensions": channel_dimensions,
+            "action_set": action_set,
+            "copy": copy,
+        }
         if (
             isinstance(num_envs, bool)
             or not isinstance(num_envs, (int, np.integer))
@@ -214,6 +227,20 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         infos["final_info"] = _info_dict(rows, done)
         infos["_final_info"] = done.copy()
         return infos
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickling keeps the constructor arguments, every match's state and the current
+        observations, so the copy goes on where this env is (SuperSuit's and RLlib's workers)."""
+        return {
+            "args": self._init_args,
+            "states": self._core.get_states(),
+            "observations": self._observations.copy(),
+        }
+
+    def __setstate__(self, saved: dict[str, Any]) -> None:
+        self.__init__(**saved["args"])  # type: ignore[misc]
+        self._core.set_states(saved["states"])
+        self._observations[:] = saved["observations"]
 
     def close_extras(self, **kwargs: Any) -> None:
         """Nothing to release: the matches are freed with the object."""

@@ -141,6 +141,34 @@ pub(crate) enum ObsOut<'a> {
     U8(&'a mut [u8]),
 }
 
+/// What a vector env does with a match whose episode just ended: Gymnasium's `AutoresetMode`
+/// (<https://farama.org/Vector-Autoreset-Mode>).
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) enum Autoreset {
+    /// The step that ends an episode returns its last observation; the next step ignores the
+    /// match's action and resets it (reward 0, not terminated or truncated).
+    NextStep,
+    /// The step that ends an episode resets the match at once and returns the next episode's
+    /// first observation; the last one goes in `final_obs`.
+    SameStep,
+    /// The match stays ended until the caller resets it (`reset_mask`); stepping it is an error.
+    Disabled,
+}
+
+impl Autoreset {
+    /// Parses Gymnasium's `AutoresetMode` values: "NextStep", "SameStep", "Disabled".
+    pub(crate) fn parse(name: &str) -> PyResult<Autoreset> {
+        match name {
+            "NextStep" => Ok(Autoreset::NextStep),
+            "SameStep" => Ok(Autoreset::SameStep),
+            "Disabled" => Ok(Autoreset::Disabled),
+            other => Err(pyo3::exceptions::PyValueError::new_err(format!(
+                "unknown autoreset mode {other:?}; expected \"NextStep\", \"SameStep\" or \"Disabled\""
+            ))),
+        }
+    }
+}
+
 /// An engine env with its encoder.
 pub(crate) struct EnvCore {
     pub(crate) env: Env,
@@ -155,6 +183,9 @@ pub(crate) struct EnvCore {
     /// The info of the last step that ended an episode (a vector env resets at once, and its
     /// `final_info` still reports the finished episode's score).
     pub(crate) final_info: StepInfo,
+    /// The last step ended the episode and the match has not been reset since (vector envs in
+    /// [`Autoreset::NextStep`] and [`Autoreset::Disabled`]).
+    pub(crate) ended: bool,
 }
 
 impl EnvCore {
@@ -179,6 +210,7 @@ impl EnvCore {
             stacks_u8,
             frame_u8: vec![0; frame_len],
             final_info: StepInfo::default(),
+            ended: false,
             pixels: match args.representation {
                 Representation::Pixels { width, height, gray } => {
                     let kind = if gray { PixelsKind::Gray } else { PixelsKind::Rgb };
@@ -219,6 +251,41 @@ impl EnvCore {
             Some(s) => self.env.reset_with_seed(s),
             None => self.env.reset(),
         }
+        self.ended = false;
+    }
+
+    /// One match's part of a vector step under `mode`: steps it with `actions` (or, in
+    /// [`Autoreset::NextStep`], resets the match the previous step ended) and writes its
+    /// rewards, its observations into `obs` and, when [`Autoreset::SameStep`] resets it, the
+    /// ended episode's last observations into `finals`. Returns (terminated, truncated).
+    pub(crate) fn vector_step(
+        &mut self,
+        actions: &[u32],
+        mode: Autoreset,
+        rewards: &mut [f32],
+        obs: ObsOut<'_>,
+        finals: Option<ObsOut<'_>>,
+    ) -> Result<(bool, bool), EngineError> {
+        if self.ended && mode == Autoreset::NextStep {
+            self.reset(None);
+            rewards.fill(0.0);
+            self.write_observations(obs, true);
+            return Ok((false, false));
+        }
+        let outcome = self.step(actions)?;
+        rewards.copy_from_slice(self.env.rewards());
+        let done = outcome.terminated || outcome.truncated;
+        if done && mode == Autoreset::SameStep {
+            if let Some(finals) = finals {
+                self.write_observations(finals, false);
+            }
+            self.reset(None);
+            self.write_observations(obs, true);
+        } else {
+            self.write_observations(obs, false);
+            self.ended = done;
+        }
+        Ok((outcome.terminated, outcome.truncated))
     }
 
     pub(crate) fn step(&mut self, actions: &[u32]) -> Result<StepOutcome, EngineError> {

@@ -6,7 +6,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use touchline_engine::StepInfo;
 
-use crate::core::{EnvArgs, EnvCore, ObsOut};
+use crate::core::{Autoreset, EnvArgs, EnvCore, ObsOut};
 use crate::errors::{engine_error, guard};
 use crate::worker::{Slot, Worker};
 use touchline_engine::EngineError;
@@ -20,6 +20,7 @@ pub(crate) struct PyVectorEnv {
     envs: Vec<EnvCore>,
     workers: Vec<Worker>,
     actions: Vec<u32>,
+    mode: Autoreset,
 }
 
 /// The observation array the caller passed: float32 or uint8, (num_envs, M, *shape).
@@ -134,20 +135,21 @@ struct Outputs<'a, T> {
 
 impl<T: ObsElem> Outputs<'_, T> {
     /// Steps the calling thread's envs (the first ones) straight into the outputs.
-    fn step_own(&mut self, envs: &mut [EnvCore], actions: &[u32], m: usize, per_env: usize) -> Result<(), EngineError> {
+    fn step_own(
+        &mut self,
+        envs: &mut [EnvCore],
+        actions: &[u32],
+        mode: Autoreset,
+        m: usize,
+        per_env: usize,
+    ) -> Result<(), EngineError> {
         for (i, e) in envs.iter_mut().enumerate() {
-            let outcome = e.step(&actions[i * m..(i + 1) * m])?;
-            self.rewards[i * m..(i + 1) * m].copy_from_slice(e.env.rewards());
-            self.terminated[i] = outcome.terminated;
-            self.truncated[i] = outcome.truncated;
-            let done = outcome.terminated || outcome.truncated;
-            if done {
-                if let Some(f) = self.finals.as_deref_mut() {
-                    e.write_observations(T::out(&mut f[i * per_env..(i + 1) * per_env]), false);
-                }
-                e.reset(None);
-            }
-            e.write_observations(T::out(&mut self.obs[i * per_env..(i + 1) * per_env]), done);
+            let obs = T::out(&mut self.obs[i * per_env..(i + 1) * per_env]);
+            let finals = self.finals.as_deref_mut().map(|f| T::out(&mut f[i * per_env..(i + 1) * per_env]));
+            let (terminated, truncated) =
+                e.vector_step(&actions[i * m..(i + 1) * m], mode, &mut self.rewards[i * m..(i + 1) * m], obs, finals)?;
+            self.terminated[i] = terminated;
+            self.truncated[i] = truncated;
         }
         Ok(())
     }
@@ -162,7 +164,7 @@ impl<T: ObsElem> Outputs<'_, T> {
         self.obs[first * per_env..(first + n) * per_env].copy_from_slice(obs);
         if let Some(f) = self.finals.as_deref_mut() {
             for i in 0..n {
-                if slot.terminated[i] || slot.truncated[i] {
+                if slot.mode == Autoreset::SameStep && (slot.terminated[i] || slot.truncated[i]) {
                     let range = (first + i) * per_env..(first + i + 1) * per_env;
                     f[range].copy_from_slice(&finals[i * per_env..(i + 1) * per_env]);
                 }
@@ -185,7 +187,7 @@ impl PyVectorEnv {
             w.start();
             first += k;
         }
-        let result = out.step_own(&mut self.envs, &self.actions[..own * m], m, per_env);
+        let result = out.step_own(&mut self.envs, &self.actions[..own * m], self.mode, m, per_env);
         let mut first = own;
         let mut failure = result.err();
         for w in &self.workers {
@@ -204,7 +206,7 @@ impl PyVectorEnv {
 #[pymethods]
 impl PyVectorEnv {
     #[new]
-    #[pyo3(signature = (scenario, num_envs, *, num_threads = 0, representation = "simple115v2", left_agents = 1, right_agents = 0, rewards = "scoring", action_set = "default", seed = 0, stacked = false, channel_dimensions = (96, 72)))]
+    #[pyo3(signature = (scenario, num_envs, *, num_threads = 0, representation = "simple115v2", left_agents = 1, right_agents = 0, rewards = "scoring", action_set = "default", seed = 0, stacked = false, channel_dimensions = (96, 72), autoreset_mode = "SameStep"))]
     #[expect(clippy::too_many_arguments, reason = "Python keyword arguments")]
     fn new(
         py: Python<'_>,
@@ -219,8 +221,10 @@ impl PyVectorEnv {
         seed: u64,
         stacked: bool,
         channel_dimensions: (usize, usize),
+        autoreset_mode: &str,
     ) -> PyResult<PyVectorEnv> {
         guard(|| {
+            let mode = Autoreset::parse(autoreset_mode)?;
             if num_envs == 0 {
                 return Err(PyValueError::new_err("num_envs must be at least 1"));
             }
@@ -257,12 +261,12 @@ impl PyVectorEnv {
             let mut workers = Vec::new();
             while !rest.is_empty() {
                 let tail = rest.split_off(run.min(rest.len()));
-                let worker = Worker::spawn(rest)
+                let worker = Worker::spawn(rest, mode)
                     .map_err(|e| PyValueError::new_err(format!("cannot start {threads} threads: {e}")))?;
                 workers.push(worker);
                 rest = tail;
             }
-            Ok(PyVectorEnv { envs, workers, actions: Vec::new() })
+            Ok(PyVectorEnv { envs, workers, actions: Vec::new(), mode })
         })
     }
 
@@ -274,6 +278,11 @@ impl PyVectorEnv {
     #[getter]
     fn num_controllers(&self) -> usize {
         self.envs[0].env.num_controllers()
+    }
+
+    #[getter]
+    fn controller_sides(&self) -> Vec<&'static str> {
+        self.envs[0].env.controller_sides().map(touchline_engine::Side::name).collect()
     }
 
     #[getter]
@@ -291,11 +300,22 @@ impl PyVectorEnv {
         self.dtype()
     }
 
-    #[pyo3(signature = (observations, seed = None))]
-    fn reset(&mut self, py: Python<'_>, observations: &Bound<'_, PyAny>, seed: Option<u64>) -> PyResult<()> {
+    /// Resets every match, or with `mask` only those where it is true; match `i` is reseeded with
+    /// `seed + i` when a seed is given. Writes the reset matches' first observations.
+    #[pyo3(signature = (observations, seed = None, mask = None))]
+    fn reset(
+        &mut self,
+        py: Python<'_>,
+        observations: &Bound<'_, PyAny>,
+        seed: Option<u64>,
+        mask: Option<Vec<bool>>,
+    ) -> PyResult<()> {
         guard(|| {
             let per_env = self.per_env_obs().max(1);
             let n = self.num_envs();
+            if mask.as_ref().is_some_and(|m| m.len() != n) {
+                return Err(PyValueError::new_err(format!("the reset mask must have {n} entries, one per match")));
+            }
             let mut array = obs_buffer(observations, self.dtype(), per_env * n)?;
             let out = slice(&mut array)?;
             // A reset happens once per run (episodes reset inside `step`): it runs serially.
@@ -303,15 +323,16 @@ impl PyVectorEnv {
             py.detach(|| {
                 let mut guards: Vec<_> = workers.iter().map(Worker::slot).collect();
                 let envs = own.iter_mut().chain(guards.iter_mut().flat_map(|g| g.envs.iter_mut()));
+                let chosen = |i: usize| mask.as_ref().is_none_or(|m| m[i]);
                 match out {
                     Slice::F32(s) => {
-                        for (i, (e, o)) in envs.zip(s.chunks_mut(per_env)).enumerate() {
+                        for (i, (e, o)) in envs.zip(s.chunks_mut(per_env)).enumerate().filter(|(i, _)| chosen(*i)) {
                             e.reset(seed.map(|s| s.wrapping_add(i as u64)));
                             e.write_observations(ObsOut::F32(o), true);
                         }
                     }
                     Slice::U8(s) => {
-                        for (i, (e, o)) in envs.zip(s.chunks_mut(per_env)).enumerate() {
+                        for (i, (e, o)) in envs.zip(s.chunks_mut(per_env)).enumerate().filter(|(i, _)| chosen(*i)) {
                             e.reset(seed.map(|s| s.wrapping_add(i as u64)));
                             e.write_observations(ObsOut::U8(o), true);
                         }
@@ -322,6 +343,13 @@ impl PyVectorEnv {
         })
     }
 
+    /// Which matches ended on their last step and have not been reset since (always none in
+    /// the SameStep mode), env order.
+    fn ended(&self) -> Vec<bool> {
+        let guards: Vec<_> = self.workers.iter().map(Worker::slot).collect();
+        self.envs.iter().chain(guards.iter().flat_map(|g| g.envs.iter())).map(|e| e.ended).collect()
+    }
+
     /// Every env's whole state (engine snapshot plus stacked frames), env order.
     fn get_states<'py>(&self, py: Python<'py>) -> Vec<Bound<'py, pyo3::types::PyBytes>> {
         let guards: Vec<_> = self.workers.iter().map(Worker::slot).collect();
@@ -329,17 +357,20 @@ impl PyVectorEnv {
         envs.map(|e| pyo3::types::PyBytes::new(py, &e.state_bytes())).collect()
     }
 
-    /// Restores `get_states` of a vector env built with the same arguments.
-    fn set_states(&mut self, states: Vec<Vec<u8>>) -> PyResult<()> {
+    /// Restores `get_states` of a vector env built with the same arguments, and with `ended`
+    /// (from [`PyVectorEnv::ended`]) which matches wait for their reset.
+    #[pyo3(signature = (states, ended = None))]
+    fn set_states(&mut self, states: Vec<Vec<u8>>, ended: Option<Vec<bool>>) -> PyResult<()> {
         guard(|| {
             let n = self.num_envs();
-            if states.len() != n {
-                return Err(PyValueError::new_err(format!("expected {n} states, got {}", states.len())));
+            if states.len() != n || ended.as_ref().is_some_and(|e| e.len() != n) {
+                return Err(PyValueError::new_err(format!("expected {n} states and ended flags")));
             }
             let mut guards: Vec<_> = self.workers.iter().map(Worker::slot).collect();
             let envs = self.envs.iter_mut().chain(guards.iter_mut().flat_map(|g| g.envs.iter_mut()));
-            for (e, state) in envs.zip(&states) {
+            for (i, (e, state)) in envs.zip(&states).enumerate() {
                 e.restore_bytes(state).map_err(engine_error)?;
+                e.ended = ended.as_ref().is_some_and(|flags| flags[i]);
             }
             Ok(())
         })
@@ -406,6 +437,14 @@ impl PyVectorEnv {
                         )));
                     }
                 }
+            }
+            if self.mode == Autoreset::Disabled
+                && let Some(i) = self.ended().iter().position(|&e| e)
+            {
+                return Err(PyValueError::new_err(format!(
+                    "match {i} ended on the last step and autoreset is disabled; reset it first with \
+                     reset(options={{\"reset_mask\": mask}})"
+                )));
             }
             let per_env = self.per_env_obs().max(1);
             let mut array = obs_buffer(observations, self.dtype(), per_env * n)?;

@@ -12,7 +12,7 @@ use std::time::{Duration, Instant};
 
 use touchline_engine::EngineError;
 
-use crate::core::{EnvCore, ObsOut};
+use crate::core::{Autoreset, EnvCore, ObsOut};
 
 /// How long an idle worker waits for the next step before parking; after [`BUSY_SPIN`] it yields
 /// its core while it waits.
@@ -33,6 +33,8 @@ pub(crate) struct Slot {
     pub(crate) finals_f32: Vec<f32>,
     pub(crate) finals_u8: Vec<u8>,
     pub(crate) error: Option<EngineError>,
+    /// The vector env's autoreset mode.
+    pub(crate) mode: Autoreset,
 }
 
 struct Shared {
@@ -55,7 +57,7 @@ pub(crate) struct Worker {
 }
 
 impl Slot {
-    pub(crate) fn new(envs: Vec<EnvCore>) -> Slot {
+    pub(crate) fn new(envs: Vec<EnvCore>, mode: Autoreset) -> Slot {
         let m: usize = envs.iter().map(|e| e.env.num_controllers()).sum();
         let obs: usize = envs.iter().map(|e| e.env.num_controllers() * e.observation_len()).sum();
         let uint8 = envs.first().is_some_and(|e| e.dtype() == "uint8");
@@ -70,6 +72,7 @@ impl Slot {
             finals_f32: vec![0.0; f],
             finals_u8: vec![0; u],
             error: None,
+            mode,
             envs,
         }
     }
@@ -82,37 +85,32 @@ impl Slot {
         for (i, e) in self.envs.iter_mut().enumerate() {
             let m = e.env.num_controllers();
             let len = m * e.observation_len();
-            let outcome = match e.step(&self.actions[a..a + m]) {
-                Ok(outcome) => outcome,
+            let finals = out(&mut self.finals_f32, &mut self.finals_u8, o, len);
+            let obs = out(&mut self.obs_f32, &mut self.obs_u8, o, len);
+            match e.vector_step(&self.actions[a..a + m], self.mode, &mut self.rewards[a..a + m], obs, Some(finals)) {
+                Ok((terminated, truncated)) => {
+                    self.terminated[i] = terminated;
+                    self.truncated[i] = truncated;
+                }
                 Err(err) => {
                     self.error = Some(err);
                     return;
                 }
-            };
-            self.rewards[a..a + m].copy_from_slice(e.env.rewards());
-            self.terminated[i] = outcome.terminated;
-            self.truncated[i] = outcome.truncated;
-            let done = outcome.terminated || outcome.truncated;
-            if done {
-                e.write_observations(out(&mut self.finals_f32, &mut self.finals_u8, o, len), false);
-                e.reset(None);
             }
-            e.write_observations(out(&mut self.obs_f32, &mut self.obs_u8, o, len), done);
             a += m;
             o += len;
         }
     }
 }
 
-/// The observation range `[at, at + len)` of whichever buffer is in use.
 fn out<'a>(f: &'a mut [f32], u: &'a mut [u8], at: usize, len: usize) -> ObsOut<'a> {
     if f.is_empty() { ObsOut::U8(&mut u[at..at + len]) } else { ObsOut::F32(&mut f[at..at + len]) }
 }
 
 impl Worker {
-    pub(crate) fn spawn(envs: Vec<EnvCore>) -> std::io::Result<Worker> {
+    pub(crate) fn spawn(envs: Vec<EnvCore>, mode: Autoreset) -> std::io::Result<Worker> {
         let shared = Arc::new(Shared {
-            slot: Mutex::new(Slot::new(envs)),
+            slot: Mutex::new(Slot::new(envs, mode)),
             requested: AtomicU64::new(0),
             claimed: AtomicU64::new(0),
             finished: AtomicU64::new(0),

@@ -56,3 +56,22 @@ def test_the_vector_env_pickles_with_its_matches() -> None:
         a, b = envs.step(actions), copy.step(actions)
         for x, y in zip(a[:4], b[:4]):
             np.testing.assert_array_equal(x, y)
+
+
+def test_a_vector_env_waiting_for_its_next_step_reset_pickles_so() -> None:
+    # In NEXT_STEP a match that just ended resets on the next step; the copy must too.
+    envs = touchline.vector.make("academy_empty_goal_close", num_envs=2, seed=3)
+    envs.reset(seed=3)
+    rng = np.random.default_rng(1)
+    for _ in range(500):
+        *_, terminated, truncated, _ = envs.step(rng.integers(19, size=2))
+        if (terminated | truncated).any():
+            break
+    assert (terminated | truncated).any()
+    copy = pickle.loads(pickle.dumps(envs))
+    actions = rng.integers(19, size=2)
+    a, b = envs.step(actions), copy.step(actions)
+    for x, y in zip(a[:4], b[:4]):
+        np.testing.assert_array_equal(x, y)
+    ended = terminated | truncated
+    assert (a[1][ended] == 0).all() and not (a[2] | a[3])[ended].any()

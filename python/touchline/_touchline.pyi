@@ -131,8 +131,9 @@ class Env:
 class VectorEnv:
     """`num_envs` independent matches stepped in Rust threads with the GIL released.
 
-    Same arguments as `Env`, plus `num_envs` and `num_threads` (0 = one per core). Episodes reset
-    automatically in the same step in which they end; seeds are `seed + i` for env i.
+    Same arguments as `Env`, plus `num_envs`, `num_threads` (0 = one per core) and
+    `autoreset_mode` (Gymnasium's `AutoresetMode` value: "SameStep", "NextStep" or "Disabled");
+    seeds are `seed + i` for env i.
     """
 
     def __new__(
@@ -149,9 +150,12 @@ class VectorEnv:
         seed: int = 0,
         stacked: bool = False,
         channel_dimensions: tuple[int, int] = ...,
+        autoreset_mode: str = "SameStep",
     ) -> Self: ...
     @property
     def num_envs(self) -> int: ...
+    @property
+    def controller_sides(self) -> list[str]: ...
     @property
     def num_controllers(self) -> int: ...
     @property
@@ -163,18 +167,31 @@ class VectorEnv:
     def get_states(self) -> list[bytes]:
         """Every match's whole state, in match order (for pickling)."""
         ...
-    def set_states(self, states: list[bytes]) -> None:
-        """Restores `get_states` of a vector env built with the same arguments.
+    def ended(self) -> list[bool]:
+        """Which matches ended on their last step and wait for their reset (NextStep, Disabled)."""
+        ...
+    def set_states(self, states: list[bytes], ended: list[bool] | None = None) -> None:
+        """Restores `get_states` (and `ended`) of a vector env built with the same arguments.
 
         Raises:
-            ValueError: another number of states, or bytes `Env.set_state` refuses.
+            ValueError: another number of states or flags, or bytes `Env.set_state` refuses.
         """
         ...
     def infos(self, current: npt.NDArray[np.float64], finals: npt.NDArray[np.float64]) -> None:
         """Writes each match's info row (12 float64 columns), now and at its last episode's end."""
         ...
-    def reset(self, observations: npt.NDArray[Any], seed: int | None = None) -> None:
-        """Resets every env, writing observations into `observations` (num_envs, M, *shape)."""
+    def reset(
+        self,
+        observations: npt.NDArray[Any],
+        seed: int | None = None,
+        mask: list[bool] | None = None,
+    ) -> None:
+        """Resets every env (or those `mask` marks), writing their observations into
+        `observations` (num_envs, M, *shape).
+
+        Raises:
+            ValueError: a wrong shape or dtype, or a mask of another length.
+        """
     def step(
         self,
         actions: npt.NDArray[np.int64],
@@ -186,10 +203,12 @@ class VectorEnv:
     ) -> None:
         """Steps every env with `actions` (num_envs, M) and writes the results into the given
         preallocated arrays without copies: observations (num_envs, M, *shape), rewards
-        (num_envs, M), terminated and truncated (num_envs,). Envs that end are reset at once and
-        their new first observation is written; their last observation goes to
-        `final_observations` (same shape as `observations`) when given.
+        (num_envs, M), terminated and truncated (num_envs,). In SameStep, envs that end are reset
+        at once and their new first observation is written, their last observation going to
+        `final_observations` (same shape as `observations`) when given; in NextStep they are
+        reset on the following step instead of being stepped.
 
         Raises:
-            ValueError: a wrong shape or dtype, or an action outside the action set.
+            ValueError: a wrong shape or dtype, an action outside the action set, or (Disabled)
+                an env that ended and was not reset.
         """

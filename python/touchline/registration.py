@@ -3,7 +3,8 @@
 `import touchline` registers them, so `gymnasium.make("touchline/academy_empty_goal_close-v0",
 representation="extracted")` works; keyword arguments are those of `touchline.make`.
 `gymnasium.make_vec("touchline/<scenario>-v0", num_envs=N)` builds touchline's own vector env
-(`touchline.vector.TouchlineVectorEnv`, matches stepped in Rust threads); pass
+(`touchline.vector.TouchlineVectorEnv`, matches stepped in Rust threads, autoreset
+`AutoresetMode.NEXT_STEP` as Gymnasium's own unless `autoreset_mode=` says otherwise); pass
 `vectorization_mode="sync"` for Gymnasium's `SyncVectorEnv` instead.
 """
 

@@ -33,7 +33,7 @@ SEED_LIMIT = 2**64
 
 
 def scenario_argument(scenario: str | os.PathLike[str]) -> str:
-    """A stdlib scenario name or the path of a compiled `.json` scenario, as a string."""
+    """A stdlib scenario name or the path of a `.tl` or compiled `.json` scenario, as a string."""
     if isinstance(scenario, os.PathLike):
         scenario = os.fspath(scenario)
     if not isinstance(scenario, str):

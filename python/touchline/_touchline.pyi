@@ -39,7 +39,7 @@ class Env:
     are float32 `(M,)`.
 
     Args:
-        scenario: stdlib name, or path to a compiled `.json` scenario.
+        scenario: stdlib name, or the path of a `.tl` scenario or a compiled `.json` one.
         representation: "raw", "simple115", "simple115v2", "extracted" (SMM), "pixels" (RGB
             frames drawn on the CPU) or "pixels_gray".
         left_agents / right_agents: players the agents control on each side.

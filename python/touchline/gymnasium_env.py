@@ -35,7 +35,7 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
     ## Description
 
     One scenario of the stdlib (`touchline.scenario_names()`: the Academy drills and the 11 v 11
-    matches of GRF) or a compiled `.json` scenario. The agent controls one or more players of the
+    matches of GRF), a `.tl` scenario or a compiled `.json` one. The agent controls one or more players of the
     left team (and optionally of the right team); every other player is driven by the built-in AI.
     One step is 0.1 s of game time (10 engine ticks); a full match is 3000 steps.
 
@@ -105,7 +105,7 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
     gymnasium.make("touchline/academy_empty_goal_close-v0", representation="extracted")
     ```
 
-    * `scenario`: a stdlib name or the path of a compiled `.json` scenario.
+    * `scenario`: a stdlib name, or the path of a `.tl` or compiled `.json` scenario.
     * `seed`: seed of the first episode; None draws a random one. `reset(seed=s)` reseeds, and
       `reset()` continues with the next episode of the current seed. Same seed and same actions
       give the same trajectory.

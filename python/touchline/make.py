@@ -23,10 +23,13 @@ def make(
     action_set: str = "default",
     render_mode: str | None = None,
 ) -> FootballEnv:
-    """A `gymnasium.Env` playing `scenario` (a stdlib name or a compiled `.json` path).
+    """A `gymnasium.Env` playing `scenario` (a stdlib name, or the path of a `.tl` or compiled `.json`
+    scenario file).
 
     Args:
-        scenario: stdlib name (`touchline.scenario_names()`) or path of a compiled `.json` scenario.
+        scenario: stdlib name (`touchline.scenario_names()`), or the path of a scenario in
+            touchline's language (`.tl`, compiled on load) or compiled by `touchline compile`
+            (`.json`).
         representation: "simple115v2" (float32 (115,)), "simple115" (GRF's legacy layout) or
             "extracted" (SMM, uint8 (72, 96, 4)); see `FootballEnv` for every index.
         rewards: "scoring" or "scoring,checkpoints" (GRF's reward names, comma-separated).
@@ -36,7 +39,8 @@ def make(
         seed: seed of the first episode; None draws a random one.
         channel_dimensions: (width, height) of SMM observations.
         action_set: "default" (19 actions) or "v2" (20, adds builtin_ai).
-        render_mode: must be None (rendering is not available yet).
+        render_mode: None or "rgb_array": `render()` returns the match drawn from above, a
+            (720, 1280, 3) uint8 RGB frame.
 
     Raises:
         touchline.ScenarioError: the scenario cannot be found or loaded; the message is the

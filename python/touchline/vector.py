@@ -59,7 +59,7 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
     seed=seed + i)` given the same actions, resetting with `reset()` after each episode.
 
     Args:
-        scenario: a stdlib name or the path of a compiled `.json` scenario.
+        scenario: a stdlib name, or the path of a `.tl` scenario or a compiled `.json` one.
         num_envs: number of matches.
         num_threads: threads stepping the matches, the calling one included, at most one per
             match (more are not started); 0 uses one per core. A step whose worker has not

@@ -183,7 +183,8 @@ def create_environment(
     """GRF's `create_environment` (grf.md §1.1), with the same arguments and defaults.
 
     Args:
-        env_name: a stdlib scenario name (GRF's scenario module name) or a compiled `.json` path.
+        env_name: a stdlib scenario name (GRF's scenario module name) or the path of a `.tl` or
+            compiled `.json` scenario.
         stacked: stack the last 4 observations along the last axis.
         representation: "raw", "extracted" (SMM), "simple115" or "simple115v2".
         rewards: comma-separated; must contain "scoring"; "checkpoints" adds the checkpoint reward.

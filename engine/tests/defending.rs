@@ -2,7 +2,8 @@
 //! defender at a carrier's back does not get to the ball; a keeper with no team-mate covering rushes
 //! out at a carrier; in his own area he takes a dribbled ball with his hands and, alone, clears it
 //! the way he faces; two bodies on one spot part instead of drifting along together; a keeper meets
-//! a contested loose ball with a first-time clearance; an agent walking away from the ball leaves it.
+//! a contested loose ball with a first-time clearance; an agent walking away from the ball takes it
+//! with him.
 
 mod common;
 
@@ -68,15 +69,22 @@ fn two_keepers_on_one_spot_part_instead_of_drifting_together() {
 }
 
 #[test]
-fn an_agents_player_walking_away_from_the_ball_leaves_it() {
-    // academy_run_to_score: the ball lies a metre in front of our CB. GRF (measured, random agent):
-    // a player whose first steps lead away from it often never touches it, and nobody owns it.
-    let mut env = common::env("academy_run_to_score", 0);
-    for step in 0..20 {
-        env.step(&[Action::Left]).unwrap();
+fn an_agents_player_walking_away_from_the_ball_takes_it_with_him() {
+    // academy_empty_goal: the ball lies a metre in front of our CB. GRF (measured, 2.10.2): holding
+    // left, bottom-left or top-left from the first step, he still gathers it (owner by step 10) and
+    // dribbles it the way he goes; he never leaves it for the opponents' keeper.
+    for action in [Action::Left, Action::BottomLeft, Action::TopLeft] {
+        let mut env = common::env("academy_empty_goal", 0);
+        for _ in 0..10 {
+            env.step(&[action]).unwrap();
+        }
         let o = &env.observations()[0];
-        assert_ne!(o.ball_owned_team, 0, "step {step}: our player took the ball walking away from it");
-        assert!((o.ball[0] - 0.02).abs() < 0.01, "step {step}: the ball moved to {:?}", o.ball);
+        assert_eq!((o.ball_owned_team, o.ball_owned_player), (0, 1), "{action:?}: nobody took the ball");
+        for _ in 0..20 {
+            env.step(&[action]).unwrap();
+        }
+        let o = &env.observations()[0];
+        assert!(o.ball[0] < -0.05, "{action:?}: the ball stayed at x = {}", o.ball[0]);
     }
 }
 

@@ -288,9 +288,6 @@ impl Match {
                 continue;
             }
             let d2 = from.distance_squared(ball.xy());
-            if self.agent_driven[g] && !keeper_hands && !self.stick_towards(g, ball.xy() - p.position) {
-                continue;
-            }
             if d2 < reach * reach && d2 < best_d2 {
                 best_d2 = d2;
                 best = Some((g, keeper_hands));

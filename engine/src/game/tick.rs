@@ -25,11 +25,6 @@ const BALL_CONTROL_RANGE: f32 = 3.0;
 /// A loose ball nearer than this (m) is at an idle player's feet already: he does not step to it
 /// (GRF shows such a ball owned by nobody until he plays it).
 const AT_FEET: f32 = 0.7;
-/// An agent's stick must not point away from the ball for him to play it: the cosine of the
-/// angle between them at least this (a little beyond square, about 95°).
-const STICK_TO_BALL: f32 = -0.1;
-/// A ball this near a player (m) is under his feet: he plays it whichever way his stick points.
-const UNDER_FEET: f32 = 0.5;
 /// Most players in a match (11 a side).
 const MAX_PLAYERS: usize = 22;
 /// A player's turning rate (rad per tick), as `physics::player_motion` turns him.
@@ -358,24 +353,13 @@ impl Match {
         }
     }
 
-    /// Whether `g`'s stick lets him play a ball lying `to_ball` from him: it is idle or does not
-    /// point away from it. GRF's ball-control touch moves the way the stick points, so an agent's
-    /// player walking away from a loose ball leaves it, and never shows as its owner (GRF 2.10,
-    /// measured: a random agent that first walks away from the ball at the start of
-    /// academy_run_to_score often never touches it).
-    pub(crate) fn stick_towards(&self, g: usize, to_ball: Vec2) -> bool {
-        let stick = self.inputs[g].velocity;
-        // A ball under his feet he plays whichever way he goes.
-        to_ball.length_squared() < UNDER_FEET * UNDER_FEET
-            || stick.length_squared() <= 0.01
-            || stick.normalize().dot(to_ball.normalize_or_zero()) >= STICK_TO_BALL
-    }
-
     /// GRF's automatic ball control for an agent's player: when the ball is loose, slow and low
-    /// within [`BALL_CONTROL_RANGE`] of him, nobody is nearer to it and his stick is idle or does not
-    /// point away from it, he steps to it and takes it (GRF's human controller issues ball-control and trap commands by
-    /// itself; the stick then steers the dribble). The velocity to step with, if so: his own pace,
-    /// at least a dribble's.
+    /// within [`BALL_CONTROL_RANGE`] of him and nobody is nearer to it, he steps to it and takes
+    /// it, whichever way his stick points (GRF's human controller issues ball-control and trap
+    /// commands by itself; the stick then steers the dribble. Measured in GRF 2.10: holding left,
+    /// bottom-left or top-left from the start of academy_empty_goal or academy_run_to_score, our CB
+    /// owns the ball by step 10 and dribbles it that way). The velocity to step with, if so: his
+    /// own pace, at least a dribble's.
     fn ball_control_step(&self, g: usize) -> Option<Vec2> {
         if self.owner.is_some() || self.mode != GameMode::Normal {
             return None;
@@ -390,9 +374,6 @@ impl Match {
             || (d2 < AT_FEET * AT_FEET && !me.controlling_ball)
             || (ball.velocity.truncate() - me.velocity).length_squared() > 9.0
         {
-            return None;
-        }
-        if !self.stick_towards(g, to) {
             return None;
         }
         let nearer = self.players.iter().any(|p| p.active && p.position.distance_squared(ball.xy()) < d2);

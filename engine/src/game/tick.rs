@@ -22,6 +22,8 @@ const PASS_WIND_UP: f32 = 10.0;
 /// How near a loose ball (m) an agent's idle player steps to it by himself (GRF's automatic ball
 /// control: the academy drills' carriers start up to 1.4 m from the ball).
 const BALL_CONTROL_RANGE: f32 = 3.0;
+/// How far ahead (s) of a rolling ball an agent's player chasing it runs to.
+const CHASE_LEAD: f32 = 0.3;
 /// A loose ball nearer than this (m) is at an idle player's feet already: he does not step to it
 /// (GRF shows such a ball owned by nobody until he plays it).
 const AT_FEET: f32 = 0.7;
@@ -353,13 +355,15 @@ impl Match {
         }
     }
 
-    /// GRF's automatic ball control for an agent's player: when the ball is loose, slow and low
-    /// within [`BALL_CONTROL_RANGE`] of him and nobody is nearer to it, he steps to it and takes
-    /// it, whichever way his stick points (GRF's human controller issues ball-control and trap
-    /// commands by itself; the stick then steers the dribble. Measured in GRF 2.10: holding left,
-    /// bottom-left or top-left from the start of academy_empty_goal or academy_run_to_score, our CB
-    /// owns the ball by step 10 and dribbles it that way). The velocity to step with, if so: his
-    /// own pace, at least a dribble's.
+    /// GRF's automatic ball control for an agent's player, the velocity it gives him if any. When
+    /// the ball is loose, slow and low within [`BALL_CONTROL_RANGE`] of him and nobody is nearer to
+    /// it, he steps to it and takes it, whichever way his stick points, at his own pace and at least
+    /// a dribble's (GRF's human controller issues ball-control and trap commands by itself; the
+    /// stick then steers the dribble. Measured in GRF 2.10: holding left, bottom-left or top-left
+    /// from the start of academy_empty_goal or academy_run_to_score, our CB owns the ball by step 10
+    /// and dribbles it that way). Further off, with his stick idle and no team-mate nearer the ball,
+    /// he sprints after it (measured: after his own shot from the centre spot of academy_empty_goal
+    /// stops short of the line, our CB with no direction pressed runs 45 m after it at 7.8 m/s).
     fn ball_control_step(&self, g: usize) -> Option<Vec2> {
         if self.owner.is_some() || self.mode != GameMode::Normal {
             return None;
@@ -368,16 +372,28 @@ impl Match {
         let me = &self.players[g];
         let to = ball.xy() - me.position;
         let d2 = to.length_squared();
+        let stick = self.inputs[g].velocity;
+        if d2 > BALL_CONTROL_RANGE * BALL_CONTROL_RANGE {
+            // Further off, only an idle stick hands him to the chase, and only as the man of his
+            // team nearest the ball.
+            let side = me.side;
+            let nearest =
+                !self.players.iter().any(|p| p.active && p.side == side && p.position.distance_squared(ball.xy()) < d2);
+            if stick.length_squared() > 0.01 || !nearest {
+                return None;
+            }
+            let meet = ball.xy() + ball.velocity.truncate() * CHASE_LEAD;
+            return Some((meet - me.position).normalize_or_zero() * me.max_speed);
+        }
         // A ball already at his feet he leaves be, unless he is on his way to it.
         if ball.position.z > 0.5
-            || d2 > BALL_CONTROL_RANGE * BALL_CONTROL_RANGE
             || (d2 < AT_FEET * AT_FEET && !me.controlling_ball)
             || (ball.velocity.truncate() - me.velocity).length_squared() > 9.0
         {
             return None;
         }
         let nearer = self.players.iter().any(|p| p.active && p.position.distance_squared(ball.xy()) < d2);
-        let pace = self.inputs[g].velocity.length().max(DRIBBLE_SPEED);
+        let pace = stick.length().max(DRIBBLE_SPEED);
         (!nearer).then(|| to.normalize_or_zero() * pace)
     }
 

@@ -53,6 +53,23 @@ def test_train_sb3_ppo(tmp_path: Path) -> None:
     assert all(-1.0 <= float(r["mean_return"]) <= 1.0 for r in rows)
 
 
+def test_sb3_ppo_trains_10k_steps_through_make_vec_env_with_no_wrapper() -> None:
+    # The first training run a new user tries (issue 16): SB3's make_vec_env on the registered id,
+    # nothing else. Its Monitor reads info["episode"], which touchline leaves free.
+    sb3 = pytest.importorskip("stable_baselines3")
+    from stable_baselines3.common.env_util import make_vec_env
+
+    import touchline  # noqa: F401  (registers the touchline/ ids)
+
+    envs = make_vec_env("touchline/academy_empty_goal_close-v0", n_envs=2, seed=0)
+    model = sb3.PPO("MlpPolicy", envs, n_steps=512, batch_size=256, seed=0, device="cpu")
+    model.learn(total_timesteps=10_000)
+    assert model.num_timesteps >= 10_000
+    episodes = list(model.ep_info_buffer)
+    assert episodes and all({"r", "l", "t"} <= set(e) for e in episodes)
+    envs.close()
+
+
 def test_ppo_vector(tmp_path: Path) -> None:
     pytest.importorskip("torch")
     pytest.importorskip("tensorboard")

@@ -19,8 +19,9 @@ const KICK_COOLDOWN: u16 = 25;
 /// Wind-up of a shot and of a pass (ticks) before any turning (see `Match::wind_up_ticks`).
 const SHOT_WIND_UP: f32 = 17.0;
 const PASS_WIND_UP: f32 = 10.0;
-/// How near a loose ball (m) an agent's idle player steps to it by himself (GRF's automatic ball
-/// control: the academy drills' carriers start up to 1.4 m from the ball).
+/// Within this distance (m) of a loose ball an agent's player steps to it by himself, whatever his
+/// stick says; beyond it he chases it only with his stick idle (GRF's automatic ball control: the
+/// academy drills' carriers start up to 1.4 m from the ball).
 const BALL_CONTROL_RANGE: f32 = 3.0;
 /// How far ahead (s) of a rolling ball an agent's player chasing it runs to.
 const CHASE_LEAD: f32 = 0.3;
@@ -375,11 +376,12 @@ impl Match {
         let stick = self.inputs[g].velocity;
         if d2 > BALL_CONTROL_RANGE * BALL_CONTROL_RANGE {
             // Further off, only an idle stick hands him to the chase, and only as the man of his
-            // team nearest the ball.
+            // team nearest the ball (the stick is checked first: it is the cheap test).
+            if stick.length_squared() > 0.01 {
+                return None;
+            }
             let side = me.side;
-            let nearest =
-                !self.players.iter().any(|p| p.active && p.side == side && p.position.distance_squared(ball.xy()) < d2);
-            if stick.length_squared() > 0.01 || !nearest {
+            if self.players.iter().any(|p| p.active && p.side == side && p.position.distance_squared(ball.xy()) < d2) {
                 return None;
             }
             let meet = ball.xy() + ball.velocity.truncate() * CHASE_LEAD;

@@ -67,6 +67,10 @@ pub struct Match {
     pub(crate) owner: Option<usize>,
     /// Ticks the current owner has had the ball.
     pub(crate) owner_ticks: u32,
+    /// The owner is a goalkeeper holding the ball in his hands: nobody may challenge him
+    /// (Law 12: preventing a keeper from releasing the ball is an offence; GRF's ball retainer).
+    #[serde(default)]
+    pub(crate) in_hands: bool,
     /// How far ahead of the owner the ball is (m); eases to half a metre after a trap.
     pub(crate) carry_distance: f32,
     /// Player who touched the ball last.
@@ -172,6 +176,7 @@ impl Match {
             colliders: PitchColliders::shared(),
             owner: None,
             owner_ticks: 0,
+            in_hands: false,
             carry_distance: 0.5,
             last_touch: None,
             possessor: None,

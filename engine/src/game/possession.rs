@@ -64,6 +64,9 @@ impl Match {
     /// Opponents near the owner try to take the ball: standing challenges win it or trip the
     /// carrier (a foul); a slide's first contact is judged for a foul (Law 12, [`rules::fouls`]).
     fn challenge(&mut self, owner: usize) {
+        if self.in_hands {
+            return;
+        }
         let side = self.players[owner].side;
         let ball = self.ball.xy();
         let range = self.ranges[side.opponent().index()].clone();
@@ -141,6 +144,7 @@ impl Match {
     fn claimed(&mut self, owner: usize, q: usize) {
         self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
         self.take_ball(q);
+        self.in_hands = self.owner == Some(q);
     }
 
     /// `g` takes the ball where it lies and brings it to his feet (the touch is judged first: it
@@ -154,6 +158,7 @@ impl Match {
         let to_ball = self.ball.xy() - self.players[g].position;
         self.carry_distance = to_ball.length().clamp(0.3, STILL_BALL_REACH);
         self.owner = Some(g);
+        self.in_hands = false;
         self.gained(g);
         self.ball.velocity = self.players[g].velocity.extend(0.0);
         self.ball.position.z = BALL_RADIUS;
@@ -336,6 +341,7 @@ impl Match {
             self.carry_distance = to_ball.length().clamp(0.3, STILL_BALL_REACH);
             self.players[g].facing = to_ball.normalize_or(self.players[g].facing);
             self.owner = Some(g);
+            self.in_hands = keeper_hands;
             self.gained(g);
             self.ball.velocity = self.players[g].velocity.extend(0.0);
             self.ball.position.z = BALL_RADIUS;

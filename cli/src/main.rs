@@ -243,11 +243,22 @@ impl CliError {
     }
 }
 
+/// miette's handler, given every diagnostic through [`touchline_dsl::excerpt::Clipped`]: a label
+/// past column 65,535 (a one-line JSON over 64 KiB) would panic it.
+struct ClippedHandler(miette::MietteHandler);
+
+impl miette::ReportHandler for ClippedHandler {
+    fn debug(&self, diagnostic: &dyn miette::Diagnostic, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.debug(&touchline_dsl::excerpt::Clipped::new(diagnostic), f)
+    }
+}
+
 fn main() -> ExitCode {
     // Usage errors print clap's message and exit with status 2; `--help` and `--version` exit 0.
     let cli = Cli::parse();
-    // The fancy graphical handler: colour and unicode when stderr is a terminal that supports them.
-    let _ = miette::set_hook(Box::new(|_| Box::new(miette::MietteHandlerOpts::new().build())));
+    // The fancy graphical handler: colour and unicode when stderr is a terminal that supports them;
+    // excerpts clipped on very long lines, where miette's padding would panic.
+    let _ = miette::set_hook(Box::new(|_| Box::new(ClippedHandler(miette::MietteHandlerOpts::new().build()))));
 
     let result = match cli.command {
         Command::Run(args) => cmd::run::run(&args),

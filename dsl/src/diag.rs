@@ -3,6 +3,8 @@
 use miette::{Diagnostic, GraphicalReportHandler, GraphicalTheme, NamedSource, SourceSpan};
 use serde_json::error::Category;
 use thiserror::Error;
+
+use crate::excerpt::{Clipped, ClippedSource};
 use touchline_engine::EngineError;
 
 /// Why a scenario could not be loaded. Every variant is a [`miette::Diagnostic`] with a stable
@@ -74,9 +76,9 @@ pub struct JsonError {
     pub line: usize,
     /// 1-based column (in bytes) of the error (0 when serde_json gives no position).
     pub column: usize,
-    /// The whole text, named after `origin`.
+    /// The whole text, named after `origin` (excerpts clipped on very long lines).
     #[source_code]
-    pub src: NamedSource<String>,
+    pub src: ClippedSource,
     /// Where the error is: serde_json's line and column as a byte span (the whole offending token
     /// for shape errors).
     #[label("{label}")]
@@ -106,7 +108,7 @@ impl LoadError {
         let (line, column) = (err.line(), err.column());
         let full = err.to_string();
         let suffix = format!(" at line {line} column {column}");
-        let message = full.strip_suffix(&suffix).unwrap_or(&full).to_owned();
+        let message = shorten(full.strip_suffix(&suffix).unwrap_or(&full));
         let offset = byte_offset(text, line, column);
         let category = err.classify();
         let span = if category == Category::Data {
@@ -135,12 +137,32 @@ impl LoadError {
             message,
             line,
             column,
-            src: NamedSource::new(origin, text.to_owned()),
-            span,
+            src: ClippedSource(NamedSource::new(origin, text.to_owned())),
+            // A one-line JSON of 100 KB puts labels far along a long line: cut them to size.
+            span: crate::excerpt::clamp_span(text, span),
             label,
             help,
         }))
     }
+}
+
+/// `message` cut in the middle when it is long: serde_json quotes the offending value whole, and a
+/// string value can be 100 KB.
+fn shorten(message: &str) -> String {
+    const HEAD: usize = 600;
+    const TAIL: usize = 100;
+    if message.len() <= 1000 {
+        return message.to_owned();
+    }
+    let mut head = HEAD;
+    while !message.is_char_boundary(head) {
+        head -= 1;
+    }
+    let mut tail = message.len() - TAIL;
+    while !message.is_char_boundary(tail) {
+        tail += 1;
+    }
+    format!("{}…{}", &message[..head], &message[tail..])
 }
 
 /// Converts serde_json's 1-based `line` and `column` (a column counts bytes: column `c` is the line's
@@ -228,7 +250,7 @@ fn render_one(err: &dyn Diagnostic) -> String {
     let mut out = String::new();
     let handler =
         GraphicalReportHandler::new_themed(GraphicalTheme::unicode_nocolor()).with_width(80).with_links(false);
-    if handler.render_report(&mut out, err).is_err() {
+    if handler.render_report(&mut out, &Clipped::new(err)).is_err() {
         // Rendering only fails if a source span cannot be read; fall back to the message.
         out = err.to_string();
     }

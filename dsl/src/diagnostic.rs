@@ -4,7 +4,7 @@
 use std::fmt;
 use std::sync::Arc;
 
-use miette::{LabeledSpan, NamedSource, Severity};
+use miette::{LabeledSpan, NamedSource, Severity, SourceSpan};
 
 use crate::syntax::Span;
 
@@ -108,6 +108,9 @@ pub enum Code {
     /// Lessons that an env cannot switch between: different numbers of controllable players or
     /// different scripts.
     LessonMismatch,
+    /// Text nested deeper than [`crate::syntax::MAX_NESTING`] levels (brackets, `not`, `-`,
+    /// operators in one expression), or `extends`, imports or params chained deeper than that.
+    TooDeep,
     /// Warning: a player or ball outside the lines (but inside the rim, so still playable).
     OutsideLines,
     /// Warning: the left team has no controllable player, so an agent has no one to drive.
@@ -123,7 +126,7 @@ pub enum Code {
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 48] = [
+    pub const ALL: [Code; 49] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -167,6 +170,7 @@ impl Code {
         Code::NeverAdvances,
         Code::UnknownMetric,
         Code::LessonMismatch,
+        Code::TooDeep,
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
@@ -220,6 +224,7 @@ impl Code {
             Code::NeverAdvances => "tl::E145",
             Code::UnknownMetric => "tl::E146",
             Code::LessonMismatch => "tl::E147",
+            Code::TooDeep => "tl::E148",
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",
@@ -298,6 +303,19 @@ impl Diagnostic {
     }
 }
 
+/// The source text, excerpted as [`crate::excerpt`] says: a window around the label on a very
+/// long line (which miette's renderer cannot pad to).
+impl miette::SourceCode for Diagnostic {
+    fn read_span<'a>(
+        &'a self,
+        span: &SourceSpan,
+        before: usize,
+        after: usize,
+    ) -> Result<Box<dyn miette::SpanContents<'a> + 'a>, miette::MietteError> {
+        crate::excerpt::read_clipped(&*self.source, span, before, after)
+    }
+}
+
 impl fmt::Display for Diagnostic {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.message)
@@ -320,17 +338,20 @@ impl miette::Diagnostic for Diagnostic {
     }
 
     fn source_code(&self) -> Option<&dyn miette::SourceCode> {
-        (!self.labels.is_empty()).then_some(&*self.source as &dyn miette::SourceCode)
+        // Itself: its excerpts are clipped on long lines (crate::excerpt).
+        (!self.labels.is_empty()).then_some(self as &dyn miette::SourceCode)
     }
 
     fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
-        Some(Box::new(self.labels.iter().enumerate().map(|(i, (span, label))| {
+        let text = self.source.inner();
+        Some(Box::new(self.labels.iter().enumerate().map(move |(i, (span, label))| {
             let len = span.end.saturating_sub(span.start);
+            let span = crate::excerpt::clamp_span(text, SourceSpan::from((span.start, len)));
             let label = (!label.is_empty()).then(|| label.clone());
             if i == 0 {
-                LabeledSpan::new_primary_with_span(label, (span.start, len))
+                LabeledSpan::new_primary_with_span(label, span)
             } else {
-                LabeledSpan::new_with_span(label, (span.start, len))
+                LabeledSpan::new_with_span(label, span)
             }
         })))
     }

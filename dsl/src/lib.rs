@@ -23,6 +23,7 @@ mod build;
 mod compile;
 mod diag;
 pub mod diagnostic;
+pub mod excerpt;
 mod format;
 mod load;
 mod print;

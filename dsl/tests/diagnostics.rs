@@ -173,6 +173,7 @@ fixtures! {
     lesson_without_criterion
     curriculum_unknown_metric
     lessons_mismatch
+    too_deep
 }
 
 #[test]

@@ -131,6 +131,8 @@ struct Compiler {
     used_imports: Vec<(usize, usize)>,
     files: Vec<PathBuf>,
     prelude: Option<usize>,
+    /// Imports being loaded now, outermost first (each loads its own imports recursively).
+    importing: usize,
 }
 
 impl Compiler {
@@ -244,11 +246,18 @@ impl Compiler {
                 self.units[index].imports.push((u, import.span));
                 continue;
             }
+            if self.importing >= syntax::MAX_NESTING {
+                self.diags.push(too_deep(&source, import.span, "imports", "an import of an import …"));
+                continue;
+            }
             match std::fs::read_to_string(&path) {
                 Ok(text) => {
                     self.files.push(path.clone());
                     let origin = path.display().to_string();
-                    if let Some(u) = self.load(text, &origin, path.parent().map(Path::to_path_buf), false, Some(key)) {
+                    self.importing += 1;
+                    let loaded = self.load(text, &origin, path.parent().map(Path::to_path_buf), false, Some(key));
+                    self.importing -= 1;
+                    if let Some(u) = loaded {
                         self.units[index].imports.push((u, import.span));
                     }
                 }
@@ -408,6 +417,15 @@ impl Compiler {
                     );
                     None
                 }
+                Some(_) if self.stack.len() >= syntax::MAX_NESTING => {
+                    self.diags.push(too_deep(
+                        &source,
+                        name.span,
+                        "definitions in an `extends` chain",
+                        "a preset extending a preset …",
+                    ));
+                    None
+                }
                 Some((u, i)) => self.resolve_with(u, i, &down),
                 None => {
                     let names = self.visible_names(unit);
@@ -531,6 +549,20 @@ impl Compiler {
 }
 
 /// Why a file cannot be read, in words that do not depend on the platform for the common cases.
+/// `tl::E148` for a chain (`extends`, imports, params) longer than [`syntax::MAX_NESTING`]: each
+/// link is resolved recursively, so an endless-looking chain would overflow the stack.
+pub(crate) fn too_deep(source: &Source, span: syntax::Span, what: &str, shape: &str) -> Diagnostic {
+    let max = syntax::MAX_NESTING;
+    Diagnostic::new(
+        Code::TooDeep,
+        format!("nested too deeply: more than {max} {what}"),
+        source,
+        span,
+        format!("link {} of the chain", max + 1),
+    )
+    .with_help(format!("{shape} may go {max} deep; shorten the chain"))
+}
+
 pub(crate) fn io_reason(e: &std::io::Error) -> String {
     match e.kind() {
         std::io::ErrorKind::NotFound => "no such file".to_owned(),

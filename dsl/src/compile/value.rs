@@ -98,6 +98,16 @@ impl<'a> Reader<'a> {
             );
             return Some(None);
         }
+        if self.expanding.len() >= crate::syntax::MAX_NESTING {
+            // Each param named in another's value is read recursively.
+            self.diags.push(super::too_deep(
+                self.source,
+                e.span,
+                "params each named in the next one's value",
+                "a param defined through another param …",
+            ));
+            return Some(None);
+        }
         let before = self.diags.items.len();
         let use_source: &'a Source = self.source;
         self.source = &param.source;
@@ -108,7 +118,8 @@ impl<'a> Reader<'a> {
         let same_file = std::sync::Arc::ptr_eq(&param.source, use_source);
         let shown = crate::format::expr_text(&param.value);
         for d in &mut self.diags.items[before..] {
-            if d.code.is_warning() {
+            // A chain too deep is reported as such where it crosses the limit.
+            if d.code.is_warning() || d.code == Code::TooDeep {
                 continue;
             }
             if d.code != Code::ParamValue {

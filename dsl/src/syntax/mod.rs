@@ -3,11 +3,13 @@
 
 pub mod ast;
 mod error;
+mod nesting;
 
 use pest::Parser;
 use pest::iterators::Pair;
 
 pub use ast::*;
+pub use nesting::MAX_NESTING;
 
 use crate::diagnostic::{Diagnostic, Source};
 
@@ -25,12 +27,20 @@ use generated::{Rule, ScenarioParser};
 /// Parses a whole `.tl` text.
 ///
 /// # Errors
-/// A `tl::E100` diagnostic at the first place the text leaves the grammar.
+/// A `tl::E100` diagnostic at the first place the text leaves the grammar; `tl::E148` at the
+/// first place it nests deeper than [`MAX_NESTING`] levels (checked first, since parsing such
+/// text would overflow the stack).
 pub fn parse(source: &Source) -> Result<File, Box<Diagnostic>> {
     let text = source.inner().as_str();
+    if let Some(deep) = nesting::scan(text) {
+        return Err(Box::new(too_deep(deep, source)));
+    }
     let mut pairs = ScenarioParser::parse(Rule::file, text).map_err(|e| Box::new(syntax_error(e, source)))?;
     let mut file = File::default();
     let root = pairs.next().expect("the file rule always yields one pair");
+    if let Some(deep) = nesting::tree_depth(root.clone()) {
+        return Err(Box::new(too_deep(deep, source)));
+    }
     for pair in root.into_inner() {
         match pair.as_rule() {
             Rule::import => file.items.push(Item::Import(string(first(pair)))),
@@ -42,6 +52,18 @@ pub fn parse(source: &Source) -> Result<File, Box<Diagnostic>> {
     // Comments inside definitions were gathered as they were met; keep them in source order.
     file.comments.sort_by_key(|c| c.span.start);
     Ok(file)
+}
+
+/// `tl::E148` at the token where the text nests deeper than [`MAX_NESTING`].
+fn too_deep(deep: nesting::TooDeep, source: &Source) -> Diagnostic {
+    Diagnostic::new(
+        crate::diagnostic::Code::TooDeep,
+        format!("nested too deeply: more than {MAX_NESTING} {}", deep.what),
+        source,
+        deep.span,
+        format!("level {} starts here", MAX_NESTING + 1),
+    )
+    .with_help("write it flatter: name a part with `param`, or split a long sum or condition")
 }
 
 /// The pair's span without trailing whitespace and comments: pest gives a pair that ends in an

@@ -1,5 +1,5 @@
-//! [`ScriptError`]: the diagnostics of scenario scripts, codes `tl::S001` … `tl::S006` (the
-//! scenario language's own codes are `tl::E…`).
+//! [`ScriptError`]: the diagnostics of scenario scripts, codes `tl::S001` … `tl::S006`, `tl::S008`
+//! and `tl::S009` (`tl::S007` is the watcher's; the scenario language's own codes are `tl::E…`).
 
 use miette::{Diagnostic, NamedSource, SourceSpan};
 use thiserror::Error;
@@ -12,7 +12,10 @@ use thiserror::Error;
 pub enum ScriptError {
     /// `tl::S001`: the script file cannot be read.
     #[error("cannot read script `{path}`")]
-    #[diagnostic(code(tl::S001), help("script paths are relative to the scenario file"))]
+    #[diagnostic(
+        code(tl::S001),
+        help("script paths are relative to the scenario file; a script is a `.rhai` text file of at most 256 KiB")
+    )]
     Unreadable {
         /// The path as the scenario wrote it, resolved against the scenario's folder.
         path: String,
@@ -92,6 +95,42 @@ pub enum ScriptError {
         /// How to fix it.
         #[help]
         help: Option<String>,
+    },
+
+    /// `tl::S008`: the script calls a function the sandbox does not have: `sleep`, or a clock
+    /// (`timestamp`, `elapsed`). Refused when the script compiles, before anything runs.
+    #[error("script `{path}`: `{name}` is not available to scripts")]
+    #[diagnostic(code(tl::S008))]
+    Refused {
+        /// The script's path.
+        path: String,
+        /// The function.
+        name: &'static str,
+        /// The script text.
+        #[source_code]
+        src: NamedSource<String>,
+        /// The call.
+        #[label("not available")]
+        span: SourceSpan,
+        /// Why it is not there.
+        #[help]
+        help: String,
+    },
+
+    /// `tl::S009`: a reward term paid a value that is not finite (its weight times what the
+    /// script returned overflows), or the step's reward overflowed when it was added in.
+    #[error("script `{path}`: the reward overflows at step {step}: {message}")]
+    #[diagnostic(
+        code(tl::S009),
+        help("scale the script's value or the term's `weight` down; a reward must stay a finite f32")
+    )]
+    NotFinite {
+        /// The script's path (the term).
+        path: String,
+        /// Steps taken in the episode.
+        step: u32,
+        /// What overflowed.
+        message: String,
     },
 
     /// `tl::S006`: a hook returned a value of the wrong type.

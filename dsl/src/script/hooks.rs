@@ -8,7 +8,7 @@ use touchline_engine::{Action, ActionSet, EngineError, HookOutcome, HookView, Ho
 
 use super::api::{State, TeamState};
 use super::diag::{self, ScriptError};
-use super::engine::{self, PrintSink};
+use super::engine::{self, Meter, PrintSink};
 use super::memory::{self, Value};
 use super::{ErrorPolicy, Role, Script, ScriptSet, base_scope};
 
@@ -18,6 +18,8 @@ pub struct ScriptHooks {
     set: Arc<ScriptSet>,
     engine: Engine,
     sink: PrintSink,
+    /// What the call under way has spent besides rhai's operations (built-ins on collections).
+    meter: Arc<Meter>,
     scopes: Vec<Scope<'static>>,
     /// The views after the last reset or step, left and right.
     now: [Arc<TeamState>; 2],
@@ -46,12 +48,14 @@ enum Returned {
 impl ScriptHooks {
     pub(crate) fn new(set: Arc<ScriptSet>) -> ScriptHooks {
         let sink = PrintSink::default();
-        let engine = engine::sandboxed(&set.options.limits, true, &sink);
+        let meter = Arc::new(Meter::default());
+        let engine = engine::sandboxed(&set.options.limits, true, &sink, &meter);
         let scopes = set.scripts.iter().map(base_scope).collect();
         ScriptHooks {
             set,
             engine,
             sink,
+            meter,
             scopes,
             now: [Arc::default(), Arc::default()],
             prev: [None, None],
@@ -105,6 +109,7 @@ impl ScriptHooks {
         let state = self.state(k);
         let options = CallFnOptions::new().eval_ast(false).rewind_scope(true);
         let ast = &self.set.scripts[i].ast;
+        self.meter.start();
         let value = self
             .engine
             .call_fn_with_options::<Dynamic>(options, &mut self.scopes[i], ast, "act", (state, me as rhai::INT))
@@ -128,28 +133,12 @@ impl ScriptHooks {
         let state = self.state(k);
         let options = CallFnOptions::new().eval_ast(false).rewind_scope(true);
         let ast = &self.set.scripts[i].ast;
+        self.meter.start();
         self.engine.call_fn_with_options(options, &mut self.scopes[i], ast, hook, (state,))
     }
 
     fn runtime_error(script: &Script, hook: &'static str, step: u32, e: &EvalAltResult) -> ScriptError {
-        let (message, help) = match e.unwrap_inner() {
-            EvalAltResult::ErrorTooManyOperations(_) => (
-                "the operation limit was reached (an endless loop?)".to_owned(),
-                Some("each hook call may run a limited number of operations (ScriptOptions::limits)".to_owned()),
-            ),
-            EvalAltResult::ErrorDataTooLarge(what, _) => (
-                format!("{what} is over its limit"),
-                Some("strings, arrays and maps are limited in size (ScriptOptions::limits)".to_owned()),
-            ),
-            EvalAltResult::ErrorStackOverflow(_) => {
-                ("the call-depth limit was reached (endless recursion?)".to_owned(), None)
-            }
-            EvalAltResult::ErrorVariableNotFound(name, _) if name == "memory" => (
-                "`memory` is not visible in helper functions".to_owned(),
-                Some("pass `memory` to the helper as an argument, or call it as `helper!(…)`".to_owned()),
-            ),
-            _ => (e.to_string(), None),
-        };
+        let (message, help) = failure(e);
         let pos = e.position();
         let span = if pos.is_none() { diag::span_of_fn(&script.text, hook) } else { diag::span_at(&script.text, pos) };
         ScriptError::Runtime { path: script.path.clone(), hook, step, message, src: script.source(), span, help }
@@ -240,6 +229,41 @@ impl ScriptHooks {
     fn drain_prints(&mut self) {
         let mut lines = self.sink.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
         self.log.append(&mut lines);
+    }
+}
+
+/// What a failed call says: the message and, for exhausted limits, how to stay within them.
+pub(crate) fn failure(e: &EvalAltResult) -> (String, Option<String>) {
+    let budget = || {
+        Some(
+            "each hook call may run a limited number of operations, a built-in on a collection counting \
+             one per element it holds (ScriptOptions::limits)"
+                .to_owned(),
+        )
+    };
+    match e.unwrap_inner() {
+        EvalAltResult::ErrorTooManyOperations(_) => {
+            ("the operation limit was reached (an endless loop?)".to_owned(), budget())
+        }
+        EvalAltResult::ErrorTerminated(why, _) if why.to_string() == engine::OUT_OF_TIME => (
+            format!("the hook ran for over {} s and was stopped", engine::TIME_GUARD.as_secs_f32()),
+            Some("a hook call must finish well within its operation budget; this one did not".to_owned()),
+        ),
+        EvalAltResult::ErrorTerminated(..) => {
+            ("the operation limit was reached (an endless loop, or large collections?)".to_owned(), budget())
+        }
+        EvalAltResult::ErrorDataTooLarge(what, _) => (
+            format!("{what} is over its limit"),
+            Some("strings, arrays and maps are limited in size (ScriptOptions::limits)".to_owned()),
+        ),
+        EvalAltResult::ErrorStackOverflow(_) => {
+            ("the call-depth limit was reached (endless recursion?)".to_owned(), None)
+        }
+        EvalAltResult::ErrorVariableNotFound(name, _) if name == "memory" => (
+            "`memory` is not visible in helper functions".to_owned(),
+            Some("pass `memory` to the helper as an argument, or call it as `helper!(…)`".to_owned()),
+        ),
+        _ => (e.to_string(), None),
     }
 }
 

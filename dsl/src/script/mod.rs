@@ -34,12 +34,17 @@
 //! }
 //! ```
 //!
-//! Sandbox ([`Limits`]): each call has an operation budget, a call-depth limit and size limits on
-//! strings, arrays and maps; variables must be declared (strict variables, checked when the script
-//! compiles); there is no `import`, no `eval`, no clock, no randomness and no file or network
-//! access. `print` and `debug` lines go to the env's log ([`Env::hook_log`](touchline_engine::Env::hook_log)).
+//! Sandbox ([`Limits`]): each call has an operation budget (built-ins on collections charged by
+//! the size of what they go through, so that the budget bounds time: under 10 ms a call in every
+//! worst case we could write), a call-depth limit and size limits on strings, arrays and maps;
+//! variables must be declared (strict variables, checked when the script compiles); there is no
+//! `import`, no `eval`, no clock, no `sleep` (a call to either is refused when the script
+//! compiles, `tl::S008`), no randomness and no file or network access. Script files are regular
+//! `.rhai` files of at most [`MAX_SCRIPT_BYTES`]. `print` and `debug` lines go to the env's log
+//! ([`Env::hook_log`](touchline_engine::Env::hook_log)). The limits, their values and the
+//! measured worst cases are tabled in `grammar/scripts.md`.
 //!
-//! Errors are [`ScriptError`] diagnostics `tl::S001` … `tl::S006`. When a hook fails during a
+//! Errors are [`ScriptError`] diagnostics `tl::S001` … `tl::S009` (`tl::S007` is the watcher's). When a hook fails during a
 //! step, [`ErrorPolicy`] decides: fail the step (the default), or pay zero for that term, log
 //! the error and count it in `StepInfo::script_errors`.
 //!
@@ -77,10 +82,13 @@
 //! Function: `f32(x)` rounds a float to single precision, as the engine computes.
 
 mod api;
+mod cost;
 mod diag;
 mod engine;
+mod file;
 mod hooks;
 mod memory;
+mod refused;
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -93,6 +101,7 @@ use touchline_engine::scenario::{EndCondition, RewardKind};
 
 pub use diag::ScriptError;
 pub use engine::Limits;
+pub use file::MAX_SCRIPT_BYTES;
 pub use hooks::ScriptHooks;
 
 /// What a failing hook does to the step.
@@ -221,7 +230,7 @@ impl Scripts {
         for (path, role) in wanted {
             let file = dir.join(&path);
             files.push(file.clone());
-            let text = match std::fs::read_to_string(&file) {
+            let text = match file::read_script(&file) {
                 Ok(text) => text,
                 Err(source) => {
                     errors.push(ScriptError::Unreadable { path: file.display().to_string(), source });
@@ -286,6 +295,7 @@ pub(crate) fn base_scope(script: &Script) -> Scope<'static> {
 /// second pass compiles strictly with `memory` and those constants declared.
 fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -> Result<Script, Box<ScriptError>> {
     let sink = engine::PrintSink::default();
+    let meter = Arc::new(engine::Meter::default());
     let src = || NamedSource::new(path, text.clone()).with_language("rhai");
     let syntax = |e: rhai::ParseError| {
         Box::new(ScriptError::Syntax {
@@ -295,14 +305,25 @@ fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -
             span: diag::span_at(&text, e.position()),
         })
     };
-    let loose = engine::sandboxed(&options.limits, false, &sink);
+    let loose = engine::sandboxed(&options.limits, false, &sink, &meter);
     let first = loose.compile(&text).map_err(syntax)?;
+    // Before the top level runs: it runs now, and a `sleep` there would hang the compile.
+    if let Some(refusal) = refused::first_refused(&first) {
+        return Err(Box::new(ScriptError::Refused {
+            path: path.to_owned(),
+            name: refusal.name,
+            src: src(),
+            span: diag::span_at(&text, refusal.position),
+            help: refusal.why.to_owned(),
+        }));
+    }
     let mut top = Scope::new();
     top.push("memory", Map::new());
+    meter.start();
     if let Err(e) = loose.run_ast_with_scope(&mut top, &first) {
         return Err(Box::new(ScriptError::TopLevel {
             path: path.to_owned(),
-            message: format!("the top level fails: {e}"),
+            message: format!("the top level fails: {}", hooks::failure(&e).0),
             src: src(),
             span: diag::span_at(&text, e.position()),
         }));
@@ -323,7 +344,7 @@ fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -
         }
         constants.push((name.to_owned(), value));
     }
-    let strict: Engine = engine::sandboxed(&options.limits, true, &sink);
+    let strict: Engine = engine::sandboxed(&options.limits, true, &sink, &meter);
     let mut scope = Scope::new();
     scope.push("memory", Map::new());
     for (name, value) in &constants {

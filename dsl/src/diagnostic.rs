@@ -111,6 +111,10 @@ pub enum Code {
     /// Text nested deeper than [`crate::syntax::MAX_NESTING`] levels (brackets, `not`, `-`,
     /// operators in one expression), or `extends`, imports or params chained deeper than that.
     TooDeep,
+    /// A reward weight, event reward value or checkpoint value larger than
+    /// [`RewardTerm::MAX_WEIGHT`](touchline_engine::scenario::RewardTerm::MAX_WEIGHT) in magnitude:
+    /// summed in f32 with other terms it could make the reward inf or NaN.
+    RewardTooLarge,
     /// Warning: a player or ball outside the lines (but inside the rim, so still playable).
     OutsideLines,
     /// Warning: the left team has no controllable player, so an agent has no one to drive.
@@ -126,7 +130,7 @@ pub enum Code {
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 49] = [
+    pub const ALL: [Code; 50] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -171,6 +175,7 @@ impl Code {
         Code::UnknownMetric,
         Code::LessonMismatch,
         Code::TooDeep,
+        Code::RewardTooLarge,
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
@@ -225,6 +230,7 @@ impl Code {
             Code::UnknownMetric => "tl::E146",
             Code::LessonMismatch => "tl::E147",
             Code::TooDeep => "tl::E148",
+            Code::RewardTooLarge => "tl::E149",
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",

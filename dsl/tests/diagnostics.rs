@@ -174,6 +174,7 @@ fixtures! {
     curriculum_unknown_metric
     lessons_mismatch
     too_deep
+    reward_weight_too_large
 }
 
 #[test]

@@ -149,7 +149,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
                     s.rewards.clear();
                     rewards_cleared = true;
                 }
-                let weight = weight.as_ref().map_or(Some(1.0), |w| r.plain_number(w, "a weight").map(|v| v as f32));
+                let weight = weight.as_ref().map_or(Some(1.0), |w| reward_number(r, w, "a weight"));
                 for term in terms {
                     if let (Some(reward), Some(weight)) = (reward_kind(term, r), weight) {
                         s.rewards.push(RewardTerm { reward, weight });
@@ -442,7 +442,7 @@ fn reward_kind(term: &syntax::RewardTerm, r: &mut Reader<'_>) -> Option<RewardKi
                         }
                         count = n as u8;
                     }
-                    "value" => value = r.plain_number(&a.value, "the checkpoint value")? as f32,
+                    "value" => value = reward_number(r, &a.value, "the checkpoint value")?,
                     other => {
                         let span = a.name.as_ref().map_or(a.value.span, |n| n.span);
                         r.error_help(
@@ -534,4 +534,22 @@ fn body(e: &Expr, s: &Scenario, r: &mut Reader<'_>) -> Option<Body> {
             None
         }
     }
+}
+
+/// A plain number that a reward pays or multiplies (a weight, an event reward, a checkpoint
+/// value), at most [`RewardTerm::MAX_WEIGHT`] in magnitude (`tl::E149` at its text otherwise): the
+/// terms of a step are summed in f32, and four weights of 1e38 would sum to inf and pay NaN.
+pub(crate) fn reward_number(r: &mut Reader<'_>, e: &Expr, what: &str) -> Option<f32> {
+    let v = r.plain_number(e, what)?;
+    if v.abs() > f64::from(RewardTerm::MAX_WEIGHT) {
+        r.error_help(
+            Code::RewardTooLarge,
+            format!("{what} of {v:e} is too large: a reward weight or value is at most 1e6 in magnitude"),
+            e.span,
+            "too large",
+            "rewards are summed in 32-bit floats; scale every term down together (e.g. weights 1 and 0.1, not 1e38)",
+        );
+        return None;
+    }
+    Some(v as f32)
 }

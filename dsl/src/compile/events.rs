@@ -93,9 +93,9 @@ pub(crate) fn reward_on(ro: &RewardOn, r: &mut Reader<'_>) -> Option<RewardTerm>
         ok = false;
     }
     let once = repeat(&ro.repeats, r);
-    let value = r.plain_number(&ro.value, "a reward value");
+    let value = super::body::reward_number(r, &ro.value, "a reward value");
     let (once, value) = (once?, value?);
-    ok.then_some(RewardTerm { reward: RewardKind::Event(EventReward { sequence, once }), weight: value as f32 })
+    ok.then_some(RewardTerm { reward: RewardKind::Event(EventReward { sequence, once }), weight: value })
 }
 
 fn step_span(step: &syntax::EventStep) -> syntax::Span {

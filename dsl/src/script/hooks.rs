@@ -199,9 +199,7 @@ impl ScriptHooks {
                 let slots = &mut rewards[start..start + len];
                 let expected = "a number, or an array with one number per agent (`s.controlled`)";
                 if let Some(r) = number(&value) {
-                    for slot in slots {
-                        *slot += weight * r;
-                    }
+                    pay(slots, std::iter::repeat(r), weight).map_err(|m| not_finite(script, view.steps, &m))?;
                     return Ok(Returned::Paid);
                 }
                 let Some(array) = value.read_lock::<rhai::Array>() else {
@@ -210,9 +208,7 @@ impl ScriptHooks {
                 let per_agent: Option<Vec<f32>> = array.iter().map(number).collect();
                 match per_agent {
                     Some(values) if values.len() == len => {
-                        for (slot, r) in slots.iter_mut().zip(values) {
-                            *slot += weight * r;
-                        }
+                        pay(slots, values.into_iter(), weight).map_err(|m| not_finite(script, view.steps, &m))?;
                         Ok(Returned::Paid)
                     }
                     _ => Err(Box::new(Self::return_error(
@@ -265,6 +261,25 @@ pub(crate) fn failure(e: &EvalAltResult) -> (String, Option<String>) {
         ),
         _ => (e.to_string(), None),
     }
+}
+
+/// Adds `weight × r` to each slot, all or none: an error naming the product when a sum would not
+/// be finite (a script's 3e38 times `weight 10` is inf), so that no inf or NaN is ever paid and,
+/// under the warn policy, the term pays zero.
+fn pay(slots: &mut [f32], values: impl Iterator<Item = f32> + Clone, weight: f32) -> Result<(), String> {
+    for (slot, r) in slots.iter().zip(values.clone()) {
+        if !(slot + weight * r).is_finite() {
+            return Err(format!("weight {weight} × the script's {r} = {}", weight * r));
+        }
+    }
+    for (slot, r) in slots.iter_mut().zip(values) {
+        *slot += weight * r;
+    }
+    Ok(())
+}
+
+fn not_finite(script: &Script, step: u32, message: &str) -> Box<ScriptError> {
+    Box::new(ScriptError::NotFinite { path: script.path.clone(), step, message: message.to_owned() })
 }
 
 /// A finite number from an int or a float.

@@ -66,19 +66,37 @@ pub enum EndCondition {
 }
 
 impl RewardTerm {
+    /// Largest weight (and checkpoint value) a term may have, in magnitude. A step's reward sums
+    /// the terms in f32: four scoring terms of weight 1e38 sum to inf and pay NaN (inf × 0) every
+    /// step. Bounded by 1e6, any number of terms a scenario can hold sums finitely.
+    pub const MAX_WEIGHT: f32 = 1e6;
+
     /// GRF's default reward: scoring with weight 1.
     pub fn scoring() -> RewardTerm {
         RewardTerm { reward: RewardKind::Scoring, weight: 1.0 }
     }
 
-    /// Checks parameters: a finite weight, 1–100 checkpoints with a finite value.
+    /// Checks parameters: a finite weight of at most [`RewardTerm::MAX_WEIGHT`] in magnitude,
+    /// 1–100 checkpoints with a value as bounded.
     pub(crate) fn check(&self) -> Result<(), String> {
         if !self.weight.is_finite() {
             return Err(format!("reward weight {} is not finite", self.weight));
         }
+        if self.weight.abs() > RewardTerm::MAX_WEIGHT {
+            return Err(format!(
+                "reward weight {} is larger than {:e} in magnitude; summed with other terms it could overflow",
+                self.weight,
+                RewardTerm::MAX_WEIGHT
+            ));
+        }
         match &self.reward {
-            RewardKind::Checkpoints { count, value } if !(1..=100).contains(count) || !value.is_finite() => {
-                Err(format!("checkpoints need a count in 1..=100 and a finite value (got {count}, {value})"))
+            RewardKind::Checkpoints { count, value }
+                if !(1..=100).contains(count) || !value.is_finite() || value.abs() > RewardTerm::MAX_WEIGHT =>
+            {
+                Err(format!(
+                    "checkpoints need a count in 1..=100 and a value of at most {:e} in magnitude (got {count}, {value})",
+                    RewardTerm::MAX_WEIGHT
+                ))
             }
             RewardKind::Event(reward) => reward.check(),
             _ => Ok(()),

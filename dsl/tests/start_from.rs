@@ -74,3 +74,21 @@ fn a_missing_or_mismatched_state_is_a_diagnostic() {
     let err = touchline_dsl::compile_file(&drill).unwrap_err();
     assert!(err.errors().next().unwrap().message.contains("snapshot"), "{}", err.render_plain());
 }
+
+/// Issue 17, item 12: `start from` takes what Python's `get_state()` returns — a snapshot with the
+/// frame stacks as extra bytes — as well as a bare snapshot.
+#[test]
+fn a_state_with_extra_bytes_starts_a_drill() {
+    let dir = scratch("start_from_get_state");
+    let mut env = Env::new(touchline_dsl::load("academy_corner").unwrap(), 2).unwrap();
+    for _ in 0..10 {
+        env.step(&[Action::Idle]).unwrap();
+    }
+    let stacks = vec![7u8; 1848];
+    std::fs::write(dir.join("moment.state"), env.snapshot().to_bytes_with(&stacks)).unwrap();
+    let drill = dir.join("moment.tl");
+    std::fs::write(&drill, "scenario moment {\n  extends academy_corner\n  start from \"moment.state\"\n}\n").unwrap();
+    let scenario = touchline_dsl::compile_file(&drill).unwrap_or_else(|d| panic!("{}", d.render_plain())).scenario;
+    let drill_env = Env::new(scenario, 0).unwrap();
+    assert_eq!(drill_env.observations()[0].left_team, env.observations()[0].left_team);
+}

@@ -81,3 +81,39 @@ fn a_snapshot_only_restores_into_its_own_scenario() {
     assert!(matches!(err, EngineError::SnapshotScenario { .. }), "{err}");
     assert_eq!(other.observations(), &before[..], "a refused restore changes nothing");
 }
+
+/// Issue 17, item 11: the extra bytes (the Python env's frame stacks) are inside the checksum.
+#[test]
+fn extra_bytes_are_under_the_checksum() {
+    let env = common::env("academy_corner", 0);
+    let extra: Vec<u8> = (0..200u8).collect();
+    let bytes = env.snapshot().to_bytes_with(&extra);
+    let (_, back) = Snapshot::from_bytes_with(&bytes).unwrap();
+    assert_eq!(back, extra);
+    Snapshot::from_bytes(&bytes).expect("the plain reader skips the extra bytes");
+    for at in [bytes.len() - 1, bytes.len() - 50, bytes.len() - 199] {
+        let mut flipped = bytes.clone();
+        flipped[at] ^= 0x01;
+        assert!(
+            matches!(Snapshot::from_bytes_with(&flipped), Err(EngineError::InvalidSnapshot { .. })),
+            "flip at {at}"
+        );
+    }
+}
+
+/// Issue 17, item 11: a saved state with a consistent checksum but a ball that is not a number
+/// is refused, where it used to give NaN observations.
+#[test]
+fn a_state_that_is_not_finite_is_refused() {
+    let mut env = common::env("academy_corner", 0);
+    env.step(&[Action::Idle]).unwrap();
+    let good = env.snapshot();
+    env.game_mut().place_ball(glam::Vec3::new(f32::NAN, 0.0, 0.1), glam::Vec3::ZERO, None);
+    let bad = env.snapshot();
+    let mut fresh = common::env("academy_corner", 1);
+    let before = fresh.observations().to_vec();
+    let err = fresh.restore(&Snapshot::from_bytes(&bad.to_bytes()).unwrap()).unwrap_err();
+    assert!(matches!(err, EngineError::InvalidSnapshot { .. }) && err.to_string().contains("ball"), "{err}");
+    assert_eq!(fresh.observations(), &before[..], "a refused restore changes nothing");
+    fresh.restore(&good).unwrap();
+}

@@ -366,34 +366,29 @@ impl EnvCore {
 }
 
 impl EnvCore {
-    /// The env's snapshot bytes followed by the frame stacks: `[u64 length][snapshot][stacks]`.
+    /// The env's snapshot with the frame stacks as its extra bytes, all under its checksum
+    /// ([`Snapshot::to_bytes_with`]): what `start from` reads too.
     pub(crate) fn state_bytes(&self) -> Vec<u8> {
-        let snapshot = self.env.snapshot().to_bytes();
         let stacks = postcard::to_allocvec(&(&self.stacks_f32, &self.stacks_u8)).unwrap_or_default();
-        let mut out = Vec::with_capacity(8 + snapshot.len() + stacks.len());
-        out.extend_from_slice(&(snapshot.len() as u64).to_le_bytes());
-        out.extend_from_slice(&snapshot);
-        out.extend_from_slice(&stacks);
-        out
+        self.env.snapshot().to_bytes_with(&stacks)
     }
 
     /// Restores bytes from [`EnvCore::state_bytes`]; on any error nothing changes.
     pub(crate) fn restore_bytes(&mut self, bytes: &[u8]) -> Result<(), EngineError> {
         let bad = |reason: &str| EngineError::InvalidSnapshot { reason: reason.into() };
-        let (len, rest) = bytes.split_at_checked(8).ok_or_else(|| bad("too short"))?;
-        let mut word = [0u8; 8];
-        word.copy_from_slice(len);
-        let len = usize::try_from(u64::from_le_bytes(word)).map_err(|_| bad("bad length"))?;
-        let (snapshot, stacks) = rest.split_at_checked(len).ok_or_else(|| bad("truncated"))?;
-        let snapshot = Snapshot::from_bytes(snapshot)?;
+        let (snapshot, stacks) = Snapshot::from_bytes_with(bytes)?;
         type Stacks = (Vec<FrameStack<f32>>, Vec<FrameStack<u8>>);
-        let (f, u): Stacks = postcard::from_bytes(stacks).map_err(|_| bad("the frame stacks do not decode"))?;
+        let (f, u): Stacks = postcard::from_bytes(&stacks).map_err(|_| bad("the frame stacks do not decode"))?;
         let fits = f.len() == self.stacks_f32.len()
             && u.len() == self.stacks_u8.len()
             && f.iter().zip(&self.stacks_f32).all(|(a, b)| b.same_shape(a))
             && u.iter().zip(&self.stacks_u8).all(|(a, b)| b.same_shape(a));
         if !fits {
             return Err(bad("the frame stacks belong to another representation"));
+        }
+        // Frames of simple115 hold finite values only; a NaN would reach the learner as is.
+        if !f.iter().all(FrameStack::is_finite) {
+            return Err(bad("the frame stacks hold a value that is not finite"));
         }
         self.env.restore(&snapshot)?;
         self.stacks_f32 = f;

@@ -123,6 +123,17 @@ pub(super) fn check(s: &Scenario, o: &Origins, source: &Source, name_span: Span,
             }
         };
         diags.push(d.with_help("remove `not controllable` from a left player, unless only the built-in AI plays"));
+    } else if s.swap_teams_on_odd_episodes && !s.right_team.iter().any(|p| p.controllable) {
+        // The right list plays left in odd episodes: an agent would have no one to drive there.
+        let message = "no right player is controllable, and the teams swap on odd episodes";
+        let label = "agents cannot play the left side in odd episodes";
+        let d = match &o.team[1] {
+            Some(r) => Diagnostic::new(Code::NoControllable, message, &r.source, r.span, label),
+            None => at_name(Code::NoControllable, message.into(), label),
+        };
+        diags.push(d.with_help(
+            "remove `not controllable` from a right player, or drop `on odd episodes swap teams`, unless only the built-in AI plays",
+        ));
     }
 }
 

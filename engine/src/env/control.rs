@@ -48,7 +48,12 @@ pub(crate) fn initial(game: &Match, side: Side, controlled: &mut [usize]) {
         let (ka, kb) = (key(a), key(b));
         ka.0.cmp(&kb.0).then(ka.1.total_cmp(&kb.1))
     });
-    controlled.copy_from_slice(&order[..controlled.len()]);
+    // `Env` never has more controllers a side than controllable players in any episode
+    // (`Scenario::controllable_every_episode`); should that break, the spare slots drive the
+    // first player rather than panic.
+    for (k, slot) in controlled.iter_mut().enumerate() {
+        *slot = order.get(k).copied().unwrap_or(0);
+    }
 }
 
 /// Moves dynamic control to the designated player when GRF's rules say so. `fixed` is true when

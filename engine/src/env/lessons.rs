@@ -40,6 +40,30 @@ impl LessonProgress {
         }
     }
 
+    /// Room in the window ring (the largest window of any lesson).
+    pub(crate) fn capacity(&self) -> usize {
+        self.results.len()
+    }
+
+    /// Checks restored progress against an env of `lessons` lessons (1 without a curriculum)
+    /// whose ring holds `capacity` results.
+    pub(crate) fn check(&self, lessons: usize, capacity: usize) -> Result<(), String> {
+        if self.lesson >= lessons {
+            return Err(format!("the curriculum is at lesson {} of {lessons}", self.lesson));
+        }
+        let cap = self.results.len();
+        if cap != capacity || self.len > cap || (cap > 0 && self.next >= cap) || (cap == 0 && self.next != 0) {
+            return Err(format!(
+                "the lesson window ({} of {cap}, next {}) does not fit {capacity}",
+                self.len, self.next
+            ));
+        }
+        if !self.episode_return.is_finite() || self.results.iter().any(|r| !r.reward.is_finite()) {
+            return Err("a lesson's episode return is not finite".into());
+        }
+        Ok(())
+    }
+
     /// A new episode starts.
     pub(crate) fn start_episode(&mut self) {
         self.episode_return = 0.0;

@@ -6,6 +6,7 @@ mod control;
 mod end;
 mod hooks;
 mod lessons;
+mod restore_check;
 mod snapshot;
 mod step;
 mod sticky;
@@ -192,7 +193,6 @@ impl Env {
             lesson_agents(c, &config, hooks.is_some())?;
             scenario = c.lessons[0].scenario.clone();
         }
-        let controllable = scenario.controllable_players();
         let agents = agents_for(&scenario, &config)?;
         let controllers: Vec<Controller> = (0..agents[0])
             .map(|_| Controller { side: Side::Left, sticky: StickyState::default() })
@@ -257,7 +257,7 @@ impl Env {
                 lessons: progress,
             },
             event_rewards,
-            fixed_control: [agents[0] == controllable[0], agents[1] == controllable[1]],
+            fixed_control: fixed_control(&scenario, agents),
             scenario,
             config,
             fingerprint: 0,
@@ -422,7 +422,7 @@ impl Env {
         // Sized here, once per accepted edit, so that stepping never allocates.
         self.state.events = vec![EventProgress::default(); n * self.event_rewards.len()];
         self.start = start;
-        self.fixed_control = [agents[0] == controllable[0], agents[1] == controllable[1]];
+        self.fixed_control = fixed_control(&scenario, agents);
         self.scenario = scenario;
         self.fingerprint = self.compute_fingerprint();
         Ok(())
@@ -585,7 +585,10 @@ impl Env {
 /// [`EngineError::InvalidConfig`] when more agents are asked for than a side has controllable
 /// players.
 fn agents_for(scenario: &Scenario, config: &EnvConfig) -> Result<[usize; 2], EngineError> {
-    let controllable = scenario.controllable_players();
+    // With the odd-episode swap a side plays either list: it needs its agents in both.
+    let controllable = scenario.controllable_every_episode();
+    let swapped =
+        if scenario.swap_teams_on_odd_episodes { " in every episode (the teams swap on odd episodes)" } else { "" };
     let mut agents = [config.left_agents, config.right_agents];
     for side in 0..2 {
         if scenario.control_all_players && agents[side] == 1 {
@@ -594,7 +597,7 @@ fn agents_for(scenario: &Scenario, config: &EnvConfig) -> Result<[usize; 2], Eng
         if agents[side] > controllable[side] {
             return Err(EngineError::InvalidConfig {
                 reason: format!(
-                    "{} agents asked for the {} team, which has {} controllable players",
+                    "{} agents asked for the {} team, which has {} controllable players{swapped}",
                     agents[side],
                     Side::from_index(side).name(),
                     controllable[side]
@@ -603,6 +606,20 @@ fn agents_for(scenario: &Scenario, config: &EnvConfig) -> Result<[usize; 2], Eng
         }
     }
     Ok(agents)
+}
+
+/// Whether each side's agents drive all its controllable players in every episode (control
+/// then never moves); with the odd-episode swap, in both lists.
+fn fixed_control(scenario: &Scenario, agents: [usize; 2]) -> [bool; 2] {
+    let n = scenario.controllable_players();
+    let fixed = |side: usize| {
+        if scenario.swap_teams_on_odd_episodes {
+            agents[side] == n[0] && agents[side] == n[1]
+        } else {
+            agents[side] == n[side]
+        }
+    };
+    [fixed(0), fixed(1)]
 }
 
 /// Checks that every lesson of `c` gives the same agents under `config` and pays rewards the

@@ -18,6 +18,10 @@ const MAGIC: &[u8; 6] = b"TLSNAP";
 /// Header: magic, format version (u16), scenario fingerprint (u64), payload checksum (u64).
 const HEADER: usize = 6 + 2 + 8 + 8;
 
+/// What the payload holds, in this order: scenario name, state, hooks' state, and the extra
+/// bytes of [`Snapshot::to_bytes_with`].
+type Payload = (String, EnvState, Vec<u8>, Vec<u8>);
+
 /// Everything in an [`Env`] that changes while it plays.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub(crate) struct EnvState {
@@ -69,8 +73,9 @@ fn fnv(bytes: &[u8]) -> u64 {
 
 impl Snapshot {
     /// Version of the byte format written by [`Snapshot::to_bytes`]; bumped whenever the state's
-    /// layout changes. Reading another version is an error.
-    pub const FORMAT_VERSION: u16 = 8;
+    /// layout changes. Reading another version is an error. Version 9 carries extra bytes (the
+    /// Python env's frame stacks) inside the checksummed payload.
+    pub const FORMAT_VERSION: u16 = 9;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {
@@ -81,7 +86,14 @@ impl Snapshot {
     /// fingerprint, checksum) and the state in postcard's compact encoding. About 5–8 KiB for a
     /// full 11-v-11 match.
     pub fn to_bytes(&self) -> Vec<u8> {
-        let payload = postcard::to_allocvec(&(&self.scenario, &*self.state, &self.hooks)).unwrap_or_default();
+        self.to_bytes_with(&[])
+    }
+
+    /// [`Snapshot::to_bytes`] with `extra` bytes of the caller's own (the Python env's frame
+    /// stacks) inside the payload, under the same checksum; [`Snapshot::from_bytes_with`] gives
+    /// them back and [`Snapshot::from_bytes`] skips them.
+    pub fn to_bytes_with(&self, extra: &[u8]) -> Vec<u8> {
+        let payload = postcard::to_allocvec(&(&self.scenario, &*self.state, &self.hooks, extra)).unwrap_or_default();
         let mut out = Vec::with_capacity(HEADER + payload.len());
         out.extend_from_slice(MAGIC);
         out.extend_from_slice(&Self::FORMAT_VERSION.to_le_bytes());
@@ -91,12 +103,22 @@ impl Snapshot {
         out
     }
 
-    /// Reads bytes written by [`Snapshot::to_bytes`].
+    /// Reads bytes written by [`Snapshot::to_bytes`] or [`Snapshot::to_bytes_with`] (the extra
+    /// bytes are skipped).
     ///
     /// # Errors
     /// [`EngineError::InvalidSnapshot`] for anything else: wrong magic, another format version,
-    /// a checksum mismatch (corruption), truncation or undecodable contents.
+    /// a checksum mismatch (corruption), truncation or undecodable contents. Whether the
+    /// contents fit an env is checked by [`Env::restore`].
     pub fn from_bytes(bytes: &[u8]) -> Result<Snapshot, EngineError> {
+        Self::from_bytes_with(bytes).map(|(snapshot, _)| snapshot)
+    }
+
+    /// Reads bytes written by [`Snapshot::to_bytes_with`]: the snapshot and the extra bytes.
+    ///
+    /// # Errors
+    /// As [`Snapshot::from_bytes`].
+    pub fn from_bytes_with(bytes: &[u8]) -> Result<(Snapshot, Vec<u8>), EngineError> {
         let bad = |reason: String| EngineError::InvalidSnapshot { reason };
         if bytes.len() < HEADER || &bytes[..6] != MAGIC {
             return Err(bad("it does not start with a touchline snapshot header".into()));
@@ -118,9 +140,9 @@ impl Snapshot {
         if fnv(payload) != checksum {
             return Err(bad("the checksum does not match: the bytes are truncated or corrupted".into()));
         }
-        let (scenario, state, hooks): (String, EnvState, Vec<u8>) =
+        let (scenario, state, hooks, extra): Payload =
             postcard::from_bytes(payload).map_err(|e| bad(format!("cannot decode the state: {e}")))?;
-        Ok(Snapshot { fingerprint, scenario, state: Box::new(state), hooks })
+        Ok((Snapshot { fingerprint, scenario, state: Box::new(state), hooks }, extra))
     }
 }
 
@@ -128,7 +150,7 @@ impl Snapshot {
 pub(super) fn start_match(scenario: &crate::Scenario, bytes: &[u8]) -> Result<Match, EngineError> {
     let snapshot = Snapshot::from_bytes(bytes)?;
     let game = snapshot.state.game;
-    let saved = [game.team(crate::geometry::Side::Left).len(), game.team(crate::geometry::Side::Right).len()];
+    let saved = [game.players.len().min(game.ranges[0].end), game.players.len().saturating_sub(game.ranges[0].end)];
     let wanted = [scenario.left_team.len(), scenario.right_team.len()];
     if saved != wanted {
         return Err(EngineError::InvalidScenario {
@@ -138,6 +160,8 @@ pub(super) fn start_match(scenario: &crate::Scenario, bytes: &[u8]) -> Result<Ma
             ),
         });
     }
+    super::restore_check::check_match(&game, wanted)
+        .map_err(|reason| EngineError::InvalidSnapshot { reason: format!("the saved match is not valid: {reason}") })?;
     Ok(game)
 }
 
@@ -169,7 +193,9 @@ impl Env {
     ///
     /// # Errors
     /// [`EngineError::SnapshotScenario`] when the snapshot was taken on another scenario or
-    /// configuration; the env is unchanged.
+    /// configuration; [`EngineError::InvalidSnapshot`] when its contents are out of range (a
+    /// position that is not finite, an index past its list: bytes edited with a consistent
+    /// checksum); the hooks' errors. The env is unchanged.
     pub fn restore(&mut self, snapshot: &Snapshot) -> Result<(), EngineError> {
         if snapshot.fingerprint != self.fingerprint {
             return Err(EngineError::SnapshotScenario {
@@ -177,6 +203,7 @@ impl Env {
                 env: self.scenario.name.clone(),
             });
         }
+        self.check_restorable(&snapshot.state)?;
         if let Some(hooks) = self.hooks.as_mut() {
             hooks.load(&snapshot.hooks)?;
         }
@@ -191,5 +218,19 @@ impl Env {
         }
         self.state.clone_from(&snapshot.state);
         Ok(())
+    }
+
+    /// Checks `state` against this env, or against the lesson it plays (a snapshot taken in
+    /// another lesson of the curriculum).
+    fn check_restorable(&self, state: &EnvState) -> Result<(), EngineError> {
+        let invalid =
+            |reason: String| EngineError::InvalidSnapshot { reason: format!("the saved state is not valid: {reason}") };
+        let lesson = self.curriculum.as_ref().and_then(|c| c.lessons.get(state.lessons.lesson));
+        match lesson {
+            Some(l) if state.lessons.lesson != self.state.lessons.lesson => {
+                state.check_against(self, &l.scenario).map_err(invalid)
+            }
+            _ => state.check_against(self, &self.scenario).map_err(invalid),
+        }
     }
 }

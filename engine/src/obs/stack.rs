@@ -123,6 +123,14 @@ impl<T: Copy + Default> FrameStack<T> {
     }
 }
 
+impl FrameStack<f32> {
+    /// Whether every value held is finite (a stack read back from bytes is checked with this
+    /// before its frames reach a learner).
+    pub fn is_finite(&self) -> bool {
+        self.frames.iter().all(|v| v.is_finite())
+    }
+}
+
 /// Copies each `C`-channel pixel of `frame` into age slot `j` of the matching `k·C` pixel of `out`.
 fn interleave<T: Copy, const C: usize>(frame: &[T], out: &mut [T], k: usize, j: usize) {
     for (dst, src) in out.chunks_exact_mut(k * C).zip(frame.as_chunks::<C>().0) {

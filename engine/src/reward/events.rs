@@ -32,6 +32,12 @@ impl EventProgress {
     pub fn step(&self) -> usize {
         usize::from(self.step)
     }
+
+    /// Whether this progress can belong to a term of `steps` sequence steps (a restored
+    /// snapshot's, checked before stepping indexes the sequence with it).
+    pub(crate) fn fits(&self, steps: usize) -> bool {
+        self.step() < steps.max(1)
+    }
 }
 
 /// One controller's point of view after a step: its team, the player it drives, its observation
@@ -71,6 +77,11 @@ impl EventRewards {
     /// Number of event terms (the length of a controller's progress slice).
     pub fn len(&self) -> usize {
         self.terms.len()
+    }
+
+    /// Sequence steps of term `k` (0 past the last term).
+    pub(crate) fn steps(&self, k: usize) -> usize {
+        self.terms.get(k).map_or(0, |(t, _)| t.sequence.len())
     }
 
     /// Whether the scenario has no event term.

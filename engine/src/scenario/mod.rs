@@ -348,6 +348,14 @@ impl Scenario {
         ]
     }
 
+    /// Controllable players each side has in *every* episode `[left, right]`: with the
+    /// odd-episode swap either list plays either side, so both sides get the smaller count. The
+    /// number of agents a side may have.
+    pub fn controllable_every_episode(&self) -> [usize; 2] {
+        let n = self.controllable_players();
+        if self.swap_teams_on_odd_episodes { [n[0].min(n[1]); 2] } else { n }
+    }
+
     /// The (left, right) player lists for a 0-based episode index, applying the odd-episode swap.
     pub fn teams_for_episode(&self, episode: u64) -> (&[PlayerEntry], &[PlayerEntry]) {
         if self.swap_teams_on_odd_episodes && episode % 2 == 1 {

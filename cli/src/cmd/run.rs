@@ -252,7 +252,8 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
         checkpoints: args.checkpoints,
     };
     let first = scenario.curriculum.as_ref().and_then(|c| c.lessons.first()).map_or(&scenario, |l| &l.scenario);
-    let controllable = first.controllable_players();
+    // With the odd-episode swap a side plays either list: what it can control in every episode.
+    let controllable = first.controllable_every_episode();
     let expected_steps = u64::from(first.game_duration) + 1;
     let dir = touchline_dsl::script_dir(&args.scenario);
     let mut env = touchline_dsl::build_env(scenario, &dir, config, args.seed).map_err(|e| match e {

@@ -91,16 +91,51 @@ pub enum Owner {
     Player(Target),
 }
 
+/// The deepest nesting of `all`, `any` and `not` a decoded [`Condition`] may have. Decoders recurse
+/// once per level and postcard has no limit of its own, so a snapshot crafted with a condition
+/// nested 100,000 deep would overflow the stack; the scenario language stops at 64 levels.
+pub const MAX_CONDITION_DEPTH: usize = 128;
+
+thread_local! {
+    /// Levels of [`Condition`] being decoded on this thread.
+    static DECODING_DEPTH: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+/// Decodes one nested level of a condition, refusing to go past [`MAX_CONDITION_DEPTH`].
+fn nested<'de, D, T>(decoder: D) -> Result<T, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    T: Deserialize<'de>,
+{
+    let depth = DECODING_DEPTH.with(|d| {
+        d.set(d.get() + 1);
+        d.get()
+    });
+    let result = if depth > MAX_CONDITION_DEPTH {
+        Err(serde::de::Error::custom(format!("conditions nested deeper than {MAX_CONDITION_DEPTH} levels")))
+    } else {
+        T::deserialize(decoder)
+    };
+    DECODING_DEPTH.with(|d| d.set(d.get() - 1));
+    result
+}
+
 /// A condition on the state of the match. Evaluated after every tick for behaviours and after
 /// every env step for end conditions.
+///
+/// Decoding refuses conditions nested deeper than [`MAX_CONDITION_DEPTH`] (`all`, `any` and `not`
+/// levels).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum Condition {
     /// Every condition holds (`A and B`).
+    #[serde(deserialize_with = "nested")]
     All(Vec<Condition>),
     /// At least one holds (`A or B`).
+    #[serde(deserialize_with = "nested")]
     Any(Vec<Condition>),
     /// The condition does not hold (`not A`).
+    #[serde(deserialize_with = "nested")]
     Not(Box<Condition>),
     /// `distance(a, b) OP metres`: the distance on the pitch between two targets, in metres.
     Distance {
@@ -192,5 +227,28 @@ impl Condition {
             Condition::Owner(_) | Condition::Mode(_) | Condition::Steps { .. } | Condition::Score { .. } => Ok(()),
             Condition::Done => Ok(()),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Issue 17, item 11: a condition nested 100,000 deep in a snapshot's bytes (postcard: `not`
+    /// is variant 2, then `steps OP N` is variant 7) is refused instead of overflowing the stack.
+    #[test]
+    fn deep_conditions_are_refused_when_decoded() {
+        let encode = |depth: usize| {
+            let mut bytes = vec![2u8; depth];
+            bytes.extend_from_slice(&[7, 0, 5]);
+            bytes
+        };
+        let shallow: Condition = postcard::from_bytes(&encode(MAX_CONDITION_DEPTH)).unwrap();
+        assert!(matches!(shallow, Condition::Not(_)));
+        let err = postcard::from_bytes::<Condition>(&encode(100_000)).unwrap_err();
+        assert!(!err.to_string().is_empty());
+        let text =
+            format!("{}{{\"steps\": {{\"op\": \"ge\", \"steps\": 5}}}}{}", "{\"not\": ".repeat(200), "}".repeat(200));
+        assert!(serde_json::from_str::<Condition>(&text).is_err());
     }
 }

@@ -94,7 +94,7 @@ pub enum Owner {
 /// The deepest nesting of `all`, `any` and `not` a decoded [`Condition`] may have. Decoders recurse
 /// once per level and postcard has no limit of its own, so a snapshot crafted with a condition
 /// nested 100,000 deep would overflow the stack; the scenario language stops at 64 levels.
-pub const MAX_CONDITION_DEPTH: usize = 128;
+pub(crate) const MAX_CONDITION_DEPTH: usize = 128;
 
 thread_local! {
     /// Levels of [`Condition`] being decoded on this thread.
@@ -123,8 +123,7 @@ where
 /// A condition on the state of the match. Evaluated after every tick for behaviours and after
 /// every env step for end conditions.
 ///
-/// Decoding refuses conditions nested deeper than [`MAX_CONDITION_DEPTH`] (`all`, `any` and `not`
-/// levels).
+/// Decoding refuses conditions nested deeper than 128 levels of `all`, `any` and `not`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum Condition {

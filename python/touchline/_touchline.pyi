@@ -113,7 +113,7 @@ class Env:
             ValueError: a side of 0 or above 8192 pixels.
         """
     def get_state(self) -> bytes:
-        """The whole state of the episode: engine snapshot plus stacked frames."""
+        """The whole state of the episode: an engine snapshot with the stacked frames inside its checksum."""
     def set_state(self, state: bytes) -> None:
         """Restores `get_state` bytes of an env built with the same arguments.
 

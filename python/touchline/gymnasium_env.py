@@ -184,7 +184,8 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
         The match (physics, players, referee, AI, random stream), sticky actions, reward and
         end-condition bookkeeping, episode counters and stacked frames: restoring it with
         `set_state` and replaying the same actions repeats the trajectory bit for bit. A few KiB
-        (GRF: up to 10 MB).
+        (GRF: up to 10 MB). The bytes are one checksummed engine snapshot with the stacked frames
+        inside it, so a scenario's `start from "FILE"` can start from them too.
         """
         return self._core.get_state()
 
@@ -193,7 +194,9 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
 
         Raises:
             ValueError: bytes that are not a state of this scenario and representation
-                (corrupted, truncated, another scenario or another touchline format version).
+                (corrupted, truncated, another scenario or another touchline format version), or
+                whose contents are out of range (a position that is not finite, an index past
+                its list).
         """
         self._core.set_state(bytes(state))
 

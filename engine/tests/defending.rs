@@ -30,6 +30,28 @@ fn defenders_at_a_standing_carriers_back_do_not_get_to_the_ball() {
 }
 
 #[test]
+fn a_goal_side_defender_does_not_dive_in_on_a_carrier_out_of_shooting_range() {
+    // academy_pass_and_shoot_with_keeper: our idle CM has the ball wide, about 28 m from goal. GRF:
+    // the centre back, goal-side, does not dive in (he marks a man, and no hunter comes), and no
+    // idle episode loses the ball in 401 steps (50 of 50). He used to dive in and win it within
+    // 64 steps in 45 of 50.
+    for seed in 0..4 {
+        let mut env = common::env("academy_pass_and_shoot_with_keeper", seed);
+        let mut gaps = Vec::new();
+        for _ in 0..300 {
+            let out = env.step(&[Action::Idle]).unwrap();
+            assert!(!out.terminated && !out.truncated, "seed {seed}: the episode ended");
+            let carrier = env.game().team(Side::Left)[2].position;
+            gaps.push(env.game().team(Side::Right)[1].position.distance(carrier));
+        }
+        assert_eq!(env.game().owner(), Some((Side::Left, 2)), "seed {seed}: our CM still has the ball");
+        gaps.sort_by(f32::total_cmp);
+        let close = gaps[gaps.len() / 10];
+        assert!(close > 2.5, "seed {seed}: the centre back came within {close:.1} m in a tenth of the steps");
+    }
+}
+
+#[test]
 fn a_keeper_with_no_team_mate_rushes_out_and_clears_the_way_he_faces() {
     // academy_empty_goal_close: the right keeper starts at OUR goal (GRF's layout). GRF: he sprints
     // up the pitch, takes the ball from our idle CB inside his own area at about step 134, and his

@@ -10,6 +10,7 @@ pub mod ball_carrier;
 mod clearance;
 pub mod difficulty;
 pub mod goalkeeper;
+pub mod marking;
 pub mod prediction;
 pub mod pressing;
 pub mod set_piece;
@@ -26,7 +27,7 @@ pub use prediction::BallPath;
 use crate::game::{GameMode, Kick, PlayerInput};
 use crate::geometry::{Side, TeamFrame};
 use crate::physics::Ball;
-use crate::player::{Player, WALK_SPEED};
+use crate::player::Player;
 use crate::rng::MatchRng;
 
 /// What the AI sees of the match (read-only).
@@ -74,6 +75,13 @@ impl MatchView<'_> {
         if !self.offsides {
             return f32::INFINITY;
         }
+        self.defensive_line(side)
+    }
+
+    /// Where the opponents' second-last player stands, as [`MatchView::offside_line`] computes it
+    /// but whether or not offside is called: the AI keeps its runners behind it always (GRF's
+    /// team AI positions by its offside line whatever the scenario's offside flag).
+    pub fn defensive_line(&self, side: Side) -> f32 {
         let sign = side.attack_sign();
         crate::rules::offside::line(self.team(side.opponent()), sign, self.ball.position.x * sign)
             .unwrap_or(f32::INFINITY)
@@ -138,6 +146,12 @@ pub struct TeamAi {
     /// Per-player θ of `builtin(θ)` behaviours (empty until one is set; `None`: the team's).
     #[serde(default)]
     player_difficulty: Vec<Option<Difficulty>>,
+    /// Per player: the opponent (global index) he marks man to man ([`marking`]).
+    #[serde(default)]
+    marks: Vec<Option<usize>>,
+    /// Tick of the next man-marking assignment.
+    #[serde(default)]
+    next_marking: u64,
 }
 
 impl TeamAi {
@@ -151,6 +165,8 @@ impl TeamAi {
             think_carry: 0.0,
             keeper_since: None,
             player_difficulty: Vec::new(),
+            marks: vec![None; players],
+            next_marking: 0,
         }
     }
 
@@ -216,6 +232,17 @@ impl TeamAi {
         let range = view.ranges[side.index()].clone();
         let keeper_has_ball = view.owner.is_some_and(|o| view.players[o].side == side && view.players[o].is_keeper());
         self.keeper_since = if keeper_has_ball { Some(self.keeper_since.unwrap_or(view.tick)) } else { None };
+        let defending = view.owner_side() != Some(side) && view.mode == GameMode::Normal;
+        if self.marks.len() != range.len() {
+            // A state saved before man marking: size it once.
+            self.marks = vec![None; range.len()];
+        }
+        if !defending {
+            self.marks.fill(None);
+        } else if view.tick >= self.next_marking || view.owner_ticks == 0 {
+            marking::assign(view, side, &mut self.marks);
+            self.next_marking = view.tick + marking::MARKING_TICKS;
+        }
         for g in range.clone() {
             let i = g - range.start;
             if native[i] {
@@ -235,12 +262,14 @@ impl TeamAi {
                 ball_carrier::plan(view, g, &analysis, difficulty, rng)
             } else if p.is_keeper() {
                 goalkeeper::plan(view, g, &analysis, difficulty)
-            } else if let Some(plan) = pressing::plan(view, g, &analysis, difficulty) {
-                Plan { slide: sliding::should_slide(view, g, rng), ..plan }
+            } else if let Some(plan) = pressing::plan(view, g, &analysis, difficulty, &self.marks, range.start) {
+                Plan { slide: sliding::should_slide(view, g), ..plan }
             } else {
-                let target = team_shape::position(view, g, analysis.frame, difficulty);
-                let d = target.distance(p.position);
-                Plan::go(target, if d > 10.0 { p.max_speed * 0.9 } else { WALK_SPEED }, ball - p.position)
+                let target = team_shape::position(view, g, analysis.frame, difficulty, self.marks[i]);
+                // Anyone the carrier runs past may slide in (GRF's sliding command is every
+                // AI player's, not the hunter's alone).
+                let slide = sliding::should_slide(view, g);
+                Plan { slide, ..Plan::go(target, team_shape::pace(view, p), ball - p.position) }
             };
             if view.mode == GameMode::Normal && p.active && !p.lazy {
                 plan.first_time = clearance::first_time(view, g, &analysis);

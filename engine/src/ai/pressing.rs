@@ -1,65 +1,195 @@
-//! Pressing and covering: when the team does not have the ball, the player who reaches it first
-//! goes for it (within the difficulty's hunt distance) and the next one covers between the ball
-//! and the goal.
+//! Pressing: the team's quickest player goes for a loose ball; a carrier is hunted by one of the
+//! two players nearest him, GRF's way (no man to mark, within his hunting distance, not yet
+//! goal-side of him), and held off by the rest.
 
 use glam::Vec2;
 
+use super::marking::mind_set;
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::geometry::pitch::HALF_LENGTH;
-use crate::player::{Player, WALK_SPEED};
+use crate::player::{Player, SPRINT_SPEED};
 
-/// Where presser `p` runs to close down `carrier` with the ball at `ball` (m, global): a little
-/// ahead of him and goal-side, then, within 2.5 m, at the ball itself in front of him (standing
-/// off goal-side, a still carrier could shield it for ever). Shared with the `press` behaviour.
-pub(crate) fn close_down(p: &Player, carrier: &Player, ball: Vec2) -> Vec2 {
+/// Where presser `p` runs to close down `carrier` with the ball at `ball` (m, global). GRF's
+/// hunter (`grf-mechanisms.md` §4, §6): he runs at the ball only while he is not yet goal-side of
+/// the carrier ([`needs_defending_movement`]); once he stands between the carrier and his goal,
+/// more than about 2.6 m off, he holds that line and waits for the carrier to come to him (GRF's
+/// defenders stand 3-6 m off an idle carrier and never dive in). Shared with the `press`
+/// behaviour. The flag says whether to run through the point at full speed (going for the ball)
+/// rather than arrive on it and stand (holding the line).
+pub(crate) fn close_down(p: &Player, carrier: &Player, ball: Vec2) -> (Vec2, bool) {
+    let sign = p.side.attack_sign();
+    let own_goal = Vec2::new(-sign * HALF_LENGTH, 0.0);
+    if !needs_defending_movement(p.position, defend_point(p.position, carrier, own_goal), sign) {
+        // Goal-side: hold the line from the carrier to goal, no further off than 6 m.
+        let to_goal = (own_goal - carrier.position).normalize_or_zero();
+        let off = p.position.distance(carrier.position).clamp(GUARD_MIN, GUARD_MAX);
+        return (carrier.position + to_goal * off, false);
+    }
+    (go_for_ball(p, carrier, ball, own_goal), true)
+}
+
+/// Where a presser who is not yet goal-side runs: a little ahead of the carrier and goal-side,
+/// then, within 2.5 m, at the ball itself in front of him.
+fn go_for_ball(p: &Player, carrier: &Player, ball: Vec2, own_goal: Vec2) -> Vec2 {
     if p.position.distance(carrier.position) < 2.5 {
-        if crate::game::duel_likeliness(p.position, carrier.position, ball) < 0.2
-            && carrier.velocity.length() < WALK_SPEED
-        {
-            // Behind a carrier who stands, his body between us and the ball: stay on his back
-            // (GRF's defender does not run round a still carrier; contact draws him round slowly,
-            // if at all). A carrier on the run he chases down to the ball and comes round.
-            return carrier.position + (p.position - carrier.position).normalize_or_zero() * 0.8;
-        }
+        // At the ball, on the far side of it from the carrier: GRF's to-ball movement, which
+        // comes round a carrier from behind.
         ball + (ball - carrier.position).normalize_or_zero() * 0.3
     } else {
-        let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
         carrier.position + carrier.velocity * 0.3 + (own_goal - carrier.position).normalize_or_zero() * 0.6
     }
 }
 
-/// A pressing or covering plan for player `g`, or `None` when he should hold his place.
-pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty) -> Option<Plan> {
+/// Nearest (m) a goal-side presser holds off a carrier he waits for: where GRF's hunter, straight
+/// goal-side, stops needing to move ([`needs_defending_movement`] flips at about 2.6 m).
+const GUARD_MIN: f32 = 2.8;
+/// Furthest (m) a goal-side presser holds off a carrier: he closes to this.
+const GUARD_MAX: f32 = 6.0;
+
+/// GRF's defend point against `carrier` for a defender at `at` (m, global; `own_goal` the goal he
+/// defends): the point on the carrier's line to that goal as far from the defender as from the
+/// carrier (clamped to the segment), plus 0.1 s of a sprint towards goal and 0.14 s of the
+/// carrier's run. Where the defender would meet him cutting across.
+pub(crate) fn defend_point(at: Vec2, carrier: &Player, own_goal: Vec2) -> Vec2 {
+    let to_goal = own_goal - carrier.position;
+    let from_carrier = at - carrier.position;
+    let along = to_goal.dot(from_carrier);
+    // The point carrier + u·to_goal on the perpendicular bisector of defender and carrier.
+    let u = if along > 1e-6 { (from_carrier.length_squared() / (2.0 * along)).clamp(0.0, 1.0) } else { 0.0 };
+    carrier.position + to_goal * u + to_goal.normalize_or_zero() * SPRINT_SPEED * 0.1 + carrier.velocity * 0.14
+}
+
+/// GRF's test of whether a defender at `at` must move to `target` (his defend point) for a team
+/// attacking towards `attack_sign`: only when the point lies wider of him than 0.8 × how far it is
+/// ahead of him (less half a metre for reaction). A defender already goal-side, straight in
+/// front of the point, stays.
+pub(crate) fn needs_defending_movement(at: Vec2, target: Vec2, attack_sign: f32) -> bool {
+    let ahead = ((target.x - at.x) * attack_sign).max(0.0) - 0.5;
+    let wide = (target.y - at.y).abs();
+    wide > 0.8 * ahead
+}
+
+/// A pressing plan for player `g`, or `None` when he should hold his place in the shape (or his
+/// man, if he marks one). `marks` are the team's man-marking jobs, by index in the team, which
+/// starts at global index `first`.
+pub fn plan(
+    view: &MatchView,
+    g: usize,
+    analysis: &Analysis,
+    difficulty: &Difficulty,
+    marks: &[Option<usize>],
+    first: usize,
+) -> Option<Plan> {
     let p = &view.players[g];
     let ball = view.ball.xy();
-    let ours = view.owner_side() == Some(p.side);
-    if ours {
-        return None;
-    }
-    let (mut chaser, _, meet) = analysis.chaser?;
-    if view.owner.is_some() && view.agent_driven.get(chaser) == Some(&true) {
-        // The team-mate nearest the carrier is an agent's player, whom the AI cannot send: the
-        // next one presses (GRF's AI hunts a carrier with the two players nearest him).
-        chaser = analysis.second.unwrap_or(chaser);
-    }
-    if chaser == g {
-        let loose = view.owner.is_none();
-        if loose || p.position.distance(ball) <= difficulty.hunt_distance {
-            let target = match view.owner {
-                // Close down the carrier: aim a little ahead of him, goal-side.
-                Some(o) => close_down(p, &view.players[o], ball),
-                // Close to a loose ball: go straight at it.
-                None if p.position.distance(ball) < 3.0 => ball + view.ball.velocity.truncate() * 0.1,
-                None => meet,
-            };
-            return Some(Plan { run_through: true, ..Plan::go(target, p.max_speed, ball - p.position) });
+    match view.owner {
+        Some(o) if view.players[o].side != p.side => {
+            if hunts(view, g, o, difficulty, marks, first) {
+                let c = &view.players[o];
+                let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
+                let target = go_for_ball(p, c, ball, own_goal);
+                return Some(Plan { run_through: true, ..Plan::go(target, p.max_speed, ball - p.position) });
+            }
+            cover(view, g, analysis, difficulty, marks, first)
+        }
+        Some(_) => None,
+        None => {
+            // A loose ball: the team's quickest player to it goes for it (GRF gives the run only to
+            // the quicker team's man; tried, it starved touchline's attack of loose balls: 0.7
+            // goals a match between equal sides instead of 2.8).
+            let (chaser, _, meet) = analysis.chaser?;
+            if chaser != g {
+                return None;
+            }
+            // Close to it: go straight at it.
+            let target =
+                if p.position.distance(ball) < 3.0 { ball + view.ball.velocity.truncate() * 0.1 } else { meet };
+            Some(Plan { run_through: true, ..Plan::go(target, p.max_speed, ball - p.position) })
         }
     }
-    if analysis.second == Some(g) && view.owner.is_some() && difficulty.theta >= 0.3 {
-        // Cover: between the ball and our goal, six metres off the ball.
-        let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
-        let target = ball + (own_goal - ball).normalize_or_zero() * 6.0;
-        return Some(Plan::go(target, p.max_speed * 0.85, ball - p.position));
+}
+
+/// GRF's hunting of a carrier (`grf-mechanisms.md` §6): of the team's two outfield players
+/// nearest him, one who marks no man and is within his hunting distance goes for the ball, while
+/// he is not yet goal-side of the carrier ([`needs_defending_movement`]). Everyone else holds the
+/// shape or his man, so a carrier is met by the defender in front of him only when he comes on.
+/// `carrier` (global index) may also be the opponent who will get to a loose ball first.
+fn hunts(
+    view: &MatchView,
+    g: usize,
+    carrier: usize,
+    difficulty: &Difficulty,
+    marks: &[Option<usize>],
+    first: usize,
+) -> bool {
+    let p = &view.players[g];
+    if marks.get(g - first).copied().flatten().is_some() {
+        return false;
     }
-    None
+    let c = &view.players[carrier];
+    let aim = c.position + c.velocity * 0.1;
+    let d2 = p.position.distance_squared(aim);
+    let nearer = view.ranges[p.side.index()]
+        .clone()
+        .filter(|&h| h != g)
+        .map(|h| &view.players[h])
+        .filter(|q| q.active && !q.is_keeper() && q.position.distance_squared(aim) < d2)
+        .count();
+    if nearer >= 2 {
+        return false;
+    }
+    let gap = (c.position + c.velocity * 0.12).distance(p.position + p.velocity * 0.04);
+    if gap > hunting_distance(p, difficulty.theta) {
+        return false;
+    }
+    let sign = p.side.attack_sign();
+    let own_goal = Vec2::new(-sign * HALF_LENGTH, 0.0);
+    needs_defending_movement(p.position, defend_point(p.position, c, own_goal), sign)
+}
+
+/// Cover: the team's second quickest to the ball, with no man to mark, stands between the ball
+/// and goal, six metres off it.
+fn cover(
+    view: &MatchView,
+    g: usize,
+    analysis: &Analysis,
+    difficulty: &Difficulty,
+    marks: &[Option<usize>],
+    first: usize,
+) -> Option<Plan> {
+    if analysis.second != Some(g) || difficulty.theta < 0.3 || marks.get(g - first).copied().flatten().is_some() {
+        return None;
+    }
+    let p = &view.players[g];
+    let ball = view.ball.xy();
+    let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
+    let target = ball + (own_goal - ball).normalize_or_zero() * 6.0;
+    Some(Plan::go(target, p.max_speed * 0.85, ball - p.position))
+}
+
+/// How far (m) from a carrier player `p` of a team of difficulty `theta` still hunts him (GRF's
+/// hunt distance): 20 m for a fresh centre back, 10 m for a centre forward, less when tired, all
+/// scaled by 0.3 + 0.7θ.
+fn hunting_distance(p: &Player, theta: f32) -> f32 {
+    (10.0 + 10.0 * (1.0 - mind_set(p.role))) * (0.5 * (1.0 - p.fatigue) + 0.5) * (0.3 + 0.7 * theta)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::Side;
+    use crate::player::Role;
+
+    #[test]
+    fn a_defender_straight_goal_side_of_the_carrier_waits_unless_he_is_close() {
+        // Right team defends the goal at +x; the carrier stands at the origin.
+        let carrier = Player::new(Side::Left, 0, Role::CF, Vec2::ZERO, Vec2::ZERO);
+        let own_goal = Vec2::new(HALF_LENGTH, 0.0);
+        let sign = Side::Right.attack_sign();
+        let wait = |at: Vec2| !needs_defending_movement(at, defend_point(at, &carrier, own_goal), sign);
+        assert!(wait(Vec2::new(5.0, 0.0)), "5 m straight goal-side: hold");
+        assert!(!wait(Vec2::new(2.0, 0.0)), "2 m goal-side: go for the ball");
+        assert!(!wait(Vec2::new(5.0, 3.0)), "5 m off but 3 m wide: get across");
+        assert!(!wait(Vec2::new(-3.0, 0.0)), "behind him: go for the ball");
+    }
 }

@@ -6,7 +6,6 @@
 
 use super::MatchView;
 use crate::game::{GameMode, duel_likeliness};
-use crate::rng::MatchRng;
 
 /// The ball (200 ms ahead) must lie between these distances (m): GRF's 0.7–1.6 m, starting where
 /// touchline's standing tackle stops reaching.
@@ -16,11 +15,9 @@ const SLIDE_TO: f32 = 1.6;
 const MIN_LIKELINESS: f32 = 0.7;
 /// The carrier must run at least this fast (m/s) for his touch to be loose enough.
 const RUNNING: f32 = 4.0;
-/// Chance that a player in position slides at one of his decisions.
-const SLIDE_CHANCE: f32 = 0.6;
 
 /// Whether player `g` of the built-in AI slides in now.
-pub(crate) fn should_slide(view: &MatchView, g: usize, rng: &mut MatchRng) -> bool {
+pub(crate) fn should_slide(view: &MatchView, g: usize) -> bool {
     let p = &view.players[g];
     let Some(o) = view.owner else { return false };
     let carrier = &view.players[o];
@@ -33,5 +30,4 @@ pub(crate) fn should_slide(view: &MatchView, g: usize, rng: &mut MatchRng) -> bo
     (SLIDE_FROM..=SLIDE_TO).contains(&d)
         && carrier.velocity.length() >= RUNNING
         && duel_likeliness(p.position, carrier.position, ball) >= MIN_LIKELINESS
-        && rng.chance(SLIDE_CHANCE)
 }

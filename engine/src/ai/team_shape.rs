@@ -4,7 +4,7 @@
 
 use glam::Vec2;
 
-use super::{Difficulty, MatchView};
+use super::{Difficulty, MatchView, marking};
 use crate::geometry::TeamFrame;
 use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 use crate::player::Role;
@@ -25,8 +25,9 @@ pub fn onside_margin(theta: f32) -> f32 {
 /// Where player `g` should stand now (m, global frame): his home position, compressed towards the
 /// ball, pushed up when his team has the ball and dropped back when it defends. Forwards in
 /// possession make runs towards goal ahead of the ball, but stay onside; defending players mark an
-/// opponent in their zone, goal-side of him, more tightly at higher θ.
-pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Difficulty) -> Vec2 {
+/// opponent in their zone, goal-side of him, more tightly at higher θ; a player the team's man
+/// marking gave a man (`man`, global index) marks him instead ([`marking::position`]).
+pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Difficulty, man: Option<usize>) -> Vec2 {
     let p = &view.players[g];
     let ball = frame.vec2(view.ball.xy());
     let ours = match view.owner {
@@ -66,17 +67,21 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Diffi
     }
     if ours && view.owner != Some(g) {
         // Stay onside: the offside line, less a margin that shrinks with θ.
-        x = x.min(view.offside_line(p.side) - onside_margin(difficulty.theta));
+        x = x.min(view.defensive_line(p.side) - onside_margin(difficulty.theta));
     }
-    if !ours && p.role.is_defender() {
-        // The back line stays goal-side of the ball.
+    if !ours && (p.role.is_defender() || x < ball.x) {
+        // The back line stays goal-side of the ball, and anyone goal-side of it stays four metres
+        // off it: only a hunter or a marker goes closer (GRF's defenders wait 3-6 m off).
         x = x.min(ball.x - 4.0);
     }
     x = x.clamp(-HALF_LENGTH + 4.0, HALF_LENGTH - 10.0);
     y = y.clamp(-HALF_WIDTH + 2.0, HALF_WIDTH - 2.0);
     let mut target = Vec2::new(x, y);
     if !ours && view.mode == crate::game::GameMode::Normal && !p.is_keeper() {
-        target = mark(view, target, p.side.opponent(), frame, difficulty.theta);
+        target = match man {
+            Some(m) => marking::position(p, &view.players[m], view.owner == Some(m), target, frame, difficulty.theta),
+            None => mark(view, target, p.side.opponent(), frame, difficulty.theta),
+        };
     }
     // At an opponents' set piece keep the distance the laws ask for.
     if view.mode != crate::game::GameMode::Normal && !ours {
@@ -86,6 +91,27 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Diffi
         }
     }
     frame.vec2(target)
+}
+
+/// How fast (m/s) player `p` goes to his place in the shape: flat out near the play, lazier the
+/// further he is from the ball (from 20 m, fully at 65 m, both shorter when tired) and the more
+/// his role leans away from the phase (forwards when the team defends, defenders when it
+/// attacks): GRF's laziness. The last metres are slowed by the arrival in `TeamAi::drive`
+/// (GRF's 2.6 × distance).
+pub fn pace(view: &MatchView, p: &crate::player::Player) -> f32 {
+    let fresh = 1.0 - p.fatigue;
+    let start = 20.0 * (0.8 * fresh + 0.2);
+    let end = 65.0 * (0.5 * fresh + 0.5);
+    let far = ((p.position.distance(view.ball.xy()) - start) / (end - start)).clamp(0.0, 1.0);
+    // GRF's fading team possession above one half: about 0.75 in possession, 0.1 without.
+    let possession = match view.owner_side() {
+        Some(s) if s == p.side => 0.75,
+        Some(_) => 0.1,
+        None => 0.4,
+    };
+    let mind_set = marking::mind_set(p.role);
+    let by_role = mind_set + possession * (1.0 - 2.0 * mind_set);
+    p.max_speed * (1.0 - far * (0.5 + 0.5 * by_role))
 }
 
 /// A player's place across the pitch (team frame, m) in GRF's moving block (GRF 2.10's team AI),

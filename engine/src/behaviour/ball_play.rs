@@ -141,7 +141,10 @@ pub(crate) fn press(
         return arrive(p, spot, p.max_speed, at - p.position);
     }
     match carrier {
-        Some(c) if c.side != p.side => run_through(p, close_down(p, c, at), at - p.position),
+        Some(c) if c.side != p.side => match close_down(p, c, at) {
+            (target, true) => run_through(p, target, at - p.position),
+            (target, false) => arrive(p, target, p.max_speed, at - p.position),
+        },
         Some(c) if c.index == p.index => idle(p, at),
         Some(_) => hold(p, anchor, at),
         None => fetch(p, ball, chase),

@@ -104,6 +104,11 @@ impl Match {
             if d2 >= TACKLE_RANGE * TACKLE_RANGE {
                 continue;
             }
+            if p.is_keeper() && p.velocity.length_squared() > KEEPER_TACKLE_SPEED * KEEPER_TACKLE_SPEED {
+                // GRF's keeper challenges only from a stand (his interfere asks for no movement
+                // of its own): running back to his line past a carrier, he leaves the ball.
+                continue;
+            }
             let likeliness = duel_likeliness(p.position, self.players[owner].position, ball);
             let dribbling = self.inputs[owner].dribble;
             let control = self.skill_of(owner, self.players[owner].attributes.ball_control).max(0.05);
@@ -370,6 +375,9 @@ impl Match {
         self.players[g].touch_cooldown = 15;
     }
 }
+
+/// Fastest (m/s) a keeper can be moving and still make a standing challenge.
+const KEEPER_TACKLE_SPEED: f32 = 3.0;
 
 /// Whether the ball is at rest (below 0.3 m/s) and the player asks to stand still (`wanted`: his
 /// input velocity), however others shove him.

@@ -115,7 +115,9 @@ fn five_a_side_against_a_lone_keeper_warns_and_refuses_when_built() {
         "{}",
         compiled.warnings.render_plain()
     );
-    let err = build_env(compiled.scenario.clone(), Path::new("."), EnvConfig::default(), 0).err().expect("refused");
+    let Err(err) = build_env(compiled.scenario.clone(), Path::new("."), EnvConfig::default(), 0) else {
+        panic!("one left agent cannot play odd episodes");
+    };
     assert!(err.to_string().contains("swap"), "{err}");
     let idle = EnvConfig { left_agents: 0, ..EnvConfig::default() };
     compile_and_play(text, "lone.tl", idle).unwrap();

@@ -121,7 +121,7 @@ fn a_swap_onto_a_team_without_controllable_players_is_refused_when_built() {
     keeper.controllable = false;
     scenario.right_team = vec![keeper];
     scenario.validate().unwrap();
-    let err = Env::new(scenario.clone(), 0).err().expect("one left agent cannot play odd episodes");
+    let Err(err) = Env::new(scenario.clone(), 0) else { panic!("one left agent cannot play odd episodes") };
     assert!(matches!(err, EngineError::InvalidConfig { .. }), "{err}");
     assert!(err.to_string().contains("swap"), "{err}");
     let config = EnvConfig { left_agents: 0, ..EnvConfig::default() };

@@ -61,7 +61,7 @@ fn full_matches_swap_formations_on_odd_episodes() {
     let obs = &env.observations()[0];
     assert!(nearest(&obs.left_team) < nearest(&obs.right_team));
     env.step(&[touchline_engine::Action::Idle]).unwrap();
-    env.reset();
+    env.reset().unwrap();
     let obs = &env.observations()[0];
     assert!(nearest(&obs.left_team) > nearest(&obs.right_team));
 }

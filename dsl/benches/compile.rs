@@ -75,13 +75,13 @@ fn reset(c: &mut Criterion) {
     c.bench_function("reset/randomised_academy/reset_with_seed", |b| {
         b.iter(|| {
             seed += 1;
-            env.reset_with_seed(seed);
+            env.reset_with_seed(seed).unwrap();
             black_box(env.observations());
         })
     });
     c.bench_function("reset/randomised_academy/reset", |b| {
         b.iter(|| {
-            env.reset();
+            env.reset().unwrap();
             black_box(env.observations());
         })
     });
@@ -89,7 +89,7 @@ fn reset(c: &mut Criterion) {
     let mut env = Env::new(fixed.scenario, 0).expect("env");
     c.bench_function("reset/academy_3_vs_1_with_keeper (not randomised)", |b| {
         b.iter(|| {
-            env.reset();
+            env.reset().unwrap();
             black_box(env.observations());
         })
     });

@@ -27,7 +27,7 @@ fn bench_env(c: &mut Criterion, name: &str, mut env: Env) {
     c.bench_function(name, |b| {
         b.iter(|| {
             if env.is_done() {
-                env.reset();
+                env.reset().unwrap();
             }
             i = (i + 1) % actions.len();
             black_box(env.step(&actions[i]).unwrap());

@@ -82,7 +82,7 @@ fn an_env_plays_the_lessons_in_order() {
             }
         }
         seen.push(env.info().lesson);
-        env.reset();
+        env.reset().unwrap();
     }
     assert_eq!(seen, [0, 0, 1, 1, 1]);
     assert_eq!(env.lesson(), Some((1, "farther")));

@@ -101,8 +101,8 @@ fn the_checkpoint_example_pays_what_the_builtin_checkpoint_pays() {
         paid += a.info().checkpoint_reward;
         goals += u32::from(a.info().score_reward == 1.0);
         if out.terminated || out.truncated {
-            a.reset();
-            b.reset();
+            a.reset().unwrap();
+            b.reset().unwrap();
         }
     }
     assert!(paid > 5.0 && goals > 0, "checkpoint reward {paid}, goals {goals}: too little happened to compare");
@@ -126,8 +126,8 @@ fn event_rewards_cost_no_step_of_play() {
         assert_eq!(a.game().state_hash(), b.game().state_hash());
         assert_eq!(a.info().score_reward, b.info().score_reward);
         if out.terminated || out.truncated {
-            a.reset();
-            b.reset();
+            a.reset().unwrap();
+            b.reset().unwrap();
         }
     }
 }

@@ -59,7 +59,7 @@ fn every_example_scenario_compiles_and_plays() {
                 }
                 assert!(steps <= limit, "{name} episode {episode}: no end after {steps} steps");
             }
-            env.reset();
+            env.reset().unwrap();
         }
     }
 }

@@ -71,7 +71,7 @@ fn compile_and_play(text: &str, origin: &str, config: EnvConfig) -> Result<(), S
                 break;
             }
         }
-        env.reset();
+        env.reset().unwrap();
     }
     Ok(())
 }

@@ -46,13 +46,13 @@ fn resets_draw_new_placements_and_seeds_repeat_them() {
         seen.push(starts(&a));
         for env in [&mut a, &mut b] {
             env.step(&[touchline_engine::Action::Idle]).unwrap();
-            env.reset();
+            env.reset().unwrap();
         }
     }
     let distinct: std::collections::HashSet<String> = seen.iter().map(|s| format!("{s:?}")).collect();
     assert_eq!(distinct.len(), 20, "every reset draws anew");
-    a.reset_with_seed(4);
-    b.reset_with_seed(3);
+    a.reset_with_seed(4).unwrap();
+    b.reset_with_seed(3).unwrap();
     assert_ne!(starts(&a), starts(&b), "another seed, other placements");
 }
 

@@ -67,7 +67,7 @@ fn rhai_checkpoints_equal_the_builtin_reward() {
         let (mut paid, mut steps) = (0.0_f64, 0_u64);
         for episode in 0..1_000 {
             if episode > 0 {
-                env.reset();
+                env.reset().unwrap();
             }
             loop {
                 let actions = random_actions(&mut rng, 1);
@@ -99,7 +99,7 @@ fn every_example_loads_and_runs() {
         for _ in 0..100 {
             let actions = random_actions(&mut rng, 2);
             if env.is_done() {
-                env.reset();
+                env.reset().unwrap();
             }
             env.step(&actions).unwrap_or_else(|e| panic!("{script}: {e}"));
             assert!(env.rewards().iter().all(|r| r.is_finite()));
@@ -151,7 +151,7 @@ fn reward(s) {
     env.step(&[Action::Idle, Action::Idle]).unwrap();
     assert_eq!(env.rewards(), &[1.0, 10.0], "weight 0.5 × [2, 20]");
     assert_eq!(env.hook_log(), &["step 2".to_owned()]);
-    env.reset();
+    env.reset().unwrap();
     env.step(&[Action::Idle, Action::Idle]).unwrap();
     assert_eq!(env.rewards(), &[0.5, 5.0], "memory starts again at each episode");
 }

@@ -43,7 +43,7 @@ fn a_saved_moment_starts_every_episode() {
         for _ in 0..20 {
             drill_env.step(&[Action::Idle]).unwrap();
         }
-        drill_env.reset();
+        drill_env.reset().unwrap();
     }
     // The compiled JSON carries the state, so the drill loads without the state file.
     let json = serde_json::to_string(&scenario).unwrap();

@@ -50,7 +50,7 @@ fn steps(c: &mut Criterion) {
             if out.terminated || out.truncated {
                 ticks += env.game().in_play_ticks();
                 goals += env.game().score().iter().sum::<u32>();
-                env.reset();
+                env.reset().unwrap();
             }
         }
         println!("play/{id}: {steps} steps, {ticks} in-play ticks in finished episodes, {goals} goals");
@@ -63,7 +63,7 @@ fn steps(c: &mut Criterion) {
             b.iter(|| {
                 let out = env.step(&[Action::BuiltinAi]).expect("step");
                 if out.terminated || out.truncated {
-                    env.reset();
+                    env.reset().unwrap();
                 }
                 black_box(env.observations());
             })

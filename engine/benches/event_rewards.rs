@@ -94,7 +94,7 @@ fn bench(c: &mut Criterion, group: &str, id: &str, mut env: Env, builtin: bool) 
             };
             let out = env.step(&[action]).expect("step");
             if out.terminated || out.truncated {
-                env.reset();
+                env.reset().unwrap();
             }
             black_box(env.rewards());
         })

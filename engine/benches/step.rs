@@ -22,7 +22,7 @@ fn bench_steps(c: &mut Criterion, id: &str, mut env: Env, mut next_action: impl 
         b.iter(|| {
             let out = env.step(&[next_action()]).expect("step");
             if out.terminated || out.truncated {
-                env.reset();
+                env.reset().unwrap();
             }
             black_box(env.observations());
         })

@@ -14,7 +14,7 @@ fn main() {
         let a: Action = set.actions()[(state % set.len() as u64) as usize];
         let out = env.step(&[a]).expect("step");
         if out.terminated || out.truncated {
-            env.reset();
+            env.reset().expect("reset");
         }
     }
 }

@@ -10,7 +10,7 @@ fn main() {
     for _ in 0..20000 {
         let out = env.step(&[Action::BuiltinAi]).expect("step");
         if out.terminated || out.truncated {
-            env.reset();
+            env.reset().expect("reset");
         }
     }
 }

@@ -60,7 +60,7 @@ fn step_does_not_allocate() {
             let out = env.step(&actions).unwrap();
             COUNTING.with(|c| c.set(false));
             if out.terminated || out.truncated {
-                env.reset();
+                env.reset().unwrap();
             }
         }
         assert_eq!(ALLOCATIONS.with(Cell::get), 0, "{name}: step allocated");
@@ -121,7 +121,7 @@ fn behaviours_do_not_allocate() {
         let out = env.step(&[]).unwrap();
         COUNTING.with(|c| c.set(false));
         if out.terminated || out.truncated {
-            env.reset();
+            env.reset().unwrap();
         }
     }
     assert_eq!(ALLOCATIONS.with(Cell::get), 0, "behaviours: step allocated");
@@ -157,7 +157,7 @@ fn event_rewards_do_not_allocate() {
         COUNTING.with(|c| c.set(false));
         paid += env.info().event_reward;
         if out.terminated || out.truncated {
-            env.reset();
+            env.reset().unwrap();
         }
     }
     assert!(paid != 0.0, "no event reward paid: the test exercised nothing");
@@ -177,7 +177,7 @@ fn step_does_not_allocate_in_a_curriculum() {
         let out = env.step(&actions).unwrap();
         COUNTING.with(|c| c.set(false));
         if out.terminated || out.truncated {
-            env.reset();
+            env.reset().unwrap();
         }
     }
     assert_eq!(env.lesson().map(|l| l.0), Some(2), "the env went through the lessons");

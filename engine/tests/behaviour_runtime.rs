@@ -64,7 +64,7 @@ fn hashes(mut env: Env, steps: usize) -> Vec<u64> {
         let o = env.step(&[]).unwrap();
         out.push(env.game().state_hash());
         if o.terminated || o.truncated {
-            env.reset();
+            env.reset().unwrap();
         }
     }
     out

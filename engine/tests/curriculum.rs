@@ -29,7 +29,7 @@ fn lessons_advance_at_reset_when_the_window_meets_the_criterion() {
         episode(&mut env, Action::Idle);
         let progress = env.curriculum_progress().unwrap();
         lessons.push((env.info().lesson, progress.episodes));
-        env.reset();
+        env.reset().unwrap();
     }
     // The lesson changes at the reset after the 2nd episode of a lesson, and stays on the last.
     assert_eq!(lessons, [(0, 1), (0, 2), (1, 1), (1, 2), (2, 1), (2, 2), (2, 3)]);
@@ -44,7 +44,7 @@ fn an_unmet_criterion_keeps_the_lesson_and_the_window_slides() {
     let mut env = Env::new(common::curriculum(3, 0.5), 1).unwrap();
     for _ in 0..5 {
         assert!(!episode(&mut env, Action::Idle));
-        env.reset();
+        env.reset().unwrap();
     }
     assert_eq!(env.lesson(), Some((0, "close")));
     let p = env.curriculum_progress().unwrap();
@@ -55,7 +55,7 @@ fn an_unmet_criterion_keeps_the_lesson_and_the_window_slides() {
     let mut scored = 0;
     for _ in 0..3 {
         scored += usize::from(episode(&mut env, Action::Right));
-        env.reset();
+        env.reset().unwrap();
     }
     assert!(scored >= 2, "scored {scored} of 3");
     assert_eq!(env.lesson().unwrap().0, 1, "the window of the last 3 now has a success rate >= 0.5");
@@ -65,7 +65,7 @@ fn an_unmet_criterion_keeps_the_lesson_and_the_window_slides() {
 fn a_reset_before_the_end_records_nothing() {
     let mut env = Env::new(common::curriculum(1, 0.0), 3).unwrap();
     env.step(&[Action::Idle]).unwrap();
-    env.reset();
+    env.reset().unwrap();
     assert_eq!(env.curriculum_progress().unwrap().episodes, 0);
     assert_eq!(env.lesson().unwrap().0, 0);
 }
@@ -75,7 +75,7 @@ fn snapshots_keep_the_lesson_and_the_window() {
     let mut env = Env::new(common::curriculum(2, 0.0), 5).unwrap();
     for _ in 0..3 {
         episode(&mut env, Action::Idle);
-        env.reset();
+        env.reset().unwrap();
     }
     assert_eq!(env.lesson().unwrap().0, 1);
     let saved = Snapshot::from_bytes(&env.snapshot().to_bytes()).unwrap();
@@ -83,9 +83,9 @@ fn snapshots_keep_the_lesson_and_the_window() {
     let obs = env.observations()[0].clone();
     // Move on to the last lesson, then come back.
     episode(&mut env, Action::Idle);
-    env.reset();
+    env.reset().unwrap();
     episode(&mut env, Action::Idle);
-    env.reset();
+    env.reset().unwrap();
     assert_eq!(env.lesson().unwrap().0, 2);
     env.restore(&saved).unwrap();
     assert_eq!(env.lesson(), Some((1, "far")));
@@ -105,7 +105,7 @@ fn the_same_seed_and_actions_give_the_same_lessons() {
             let action = if i % 3 == 0 { Action::Idle } else { Action::Right };
             let scored = episode(&mut env, action);
             trace.push((env.info().lesson, scored, env.info().steps));
-            env.reset();
+            env.reset().unwrap();
         }
         trace
     };

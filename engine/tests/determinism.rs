@@ -19,7 +19,7 @@ fn trajectory(scenario: Scenario, seed: u64, steps: usize) -> u64 {
             h = h.rotate_left(3) ^ u64::from(o.ball[0].to_bits()) ^ (u64::from(o.ball[1].to_bits()) << 32);
         }
         if out.terminated || out.truncated {
-            env.reset();
+            env.reset().unwrap();
         }
     }
     h

@@ -21,7 +21,7 @@ fn steps_left_and_the_time_limit_follow_grf() {
     assert!(env.is_done());
     assert_eq!(env.step(&[Action::Idle]), Err(EngineError::EpisodeOver));
     // A reset starts again.
-    env.reset();
+    env.reset().unwrap();
     assert_eq!(env.observations()[0].steps_left, 11);
     assert!(env.step(&[Action::Idle]).is_ok());
 }

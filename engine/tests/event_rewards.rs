@@ -75,8 +75,8 @@ fn compare(name: &str, config: EnvConfig, seed: u64, steps: usize) -> f32 {
         assert_eq!(b.info().checkpoint_reward, 0.0);
         paid += ca;
         if out_a.terminated || out_a.truncated {
-            a.reset();
-            b.reset();
+            a.reset().unwrap();
+            b.reset().unwrap();
         }
     }
     paid
@@ -193,7 +193,7 @@ fn snapshots_carry_event_progress() {
     }
     let bytes = env.snapshot().to_bytes();
     let mut other = env.clone();
-    other.reset();
+    other.reset().unwrap();
     other.restore(&touchline_engine::Snapshot::from_bytes(&bytes).unwrap()).unwrap();
     let (mut paid, mut later) = (0.0, 0);
     while !env.is_done() {

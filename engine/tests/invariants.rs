@@ -40,7 +40,7 @@ proptest! {
             stopped = if env.info().game_mode == GameMode::Normal { 0 } else { stopped + 1 };
             prop_assert!(stopped <= 30, "stuck at {:?}", env.info().game_mode);
             if out.terminated || out.truncated {
-                env.reset();
+                env.reset().unwrap();
                 score = [0, 0];
                 stopped = 0;
             }

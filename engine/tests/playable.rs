@@ -86,7 +86,7 @@ fn play(scenario: Scenario, config: EnvConfig, seed: u64, actions: &[u32]) -> Re
                 break;
             }
         }
-        env.reset();
+        env.reset().unwrap();
     }
     Ok(())
 }

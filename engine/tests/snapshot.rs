@@ -14,7 +14,7 @@ fn play(env: &mut Env, actions: &[Action]) -> Vec<(Vec<touchline_engine::RawObse
             let out = env.step(&vec![a; env.num_controllers()]).unwrap();
             let seen = (env.observations().to_vec(), env.rewards().to_vec(), out);
             if out.terminated || out.truncated {
-                env.reset();
+                env.reset().unwrap();
             }
             seen
         })

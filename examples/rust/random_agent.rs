@@ -34,7 +34,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     for episode in 0..EPISODES {
         if episode > 0 {
-            env.reset();
+            env.reset()?;
         }
         let mut episode_return = 0.0_f32;
         loop {

@@ -246,12 +246,19 @@ impl EnvCore {
         }
     }
 
-    pub(crate) fn reset(&mut self, seed: Option<u64>) {
-        match seed {
+    /// Starts the next episode (of `seed` when given).
+    ///
+    /// # Errors
+    /// A script's `reset` hook that fails: the episode is over before it began and the match
+    /// counts as ended, so that a vector env resets it again (to the following episode) at its
+    /// next step instead of stepping a broken episode.
+    pub(crate) fn reset(&mut self, seed: Option<u64>) -> Result<(), EngineError> {
+        let result = match seed {
             Some(s) => self.env.reset_with_seed(s),
             None => self.env.reset(),
-        }
-        self.ended = false;
+        };
+        self.ended = result.is_err();
+        result
     }
 
     /// One match's part of a vector step under `mode`: steps it with `actions` (or, in
@@ -267,10 +274,14 @@ impl EnvCore {
         finals: Option<ObsOut<'_>>,
     ) -> Result<(bool, bool), EngineError> {
         if self.ended && mode == Autoreset::NextStep {
-            self.reset(None);
+            self.reset(None)?;
             rewards.fill(0.0);
             self.write_observations(obs, true);
             return Ok((false, false));
+        }
+        if self.ended && mode == Autoreset::SameStep {
+            // Only a failed reset leaves a SameStep match ended: try the next episode.
+            self.reset(None)?;
         }
         let outcome = self.step(actions)?;
         rewards.copy_from_slice(self.env.rewards());
@@ -279,7 +290,7 @@ impl EnvCore {
             if let Some(finals) = finals {
                 self.write_observations(finals, false);
             }
-            self.reset(None);
+            self.reset(None)?;
             self.write_observations(obs, true);
         } else {
             self.write_observations(obs, false);

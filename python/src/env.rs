@@ -191,7 +191,7 @@ impl PyEnv {
     #[pyo3(signature = (seed = None))]
     fn reset<'py>(&mut self, py: Python<'py>, seed: Option<u64>) -> PyResult<Bound<'py, PyAny>> {
         guard(|| {
-            self.core.reset(seed);
+            self.core.reset(seed).map_err(engine_error)?;
             self.observation(py, true)
         })
     }

@@ -320,26 +320,34 @@ impl PyVectorEnv {
             let out = slice(&mut array)?;
             // A reset happens once per run (episodes reset inside `step`): it runs serially.
             let (own, workers) = (&mut self.envs, &self.workers);
-            py.detach(|| {
+            // Every chosen match is reset even when one fails (a script's `reset` hook); the
+            // first failure is raised, and the failed match stays ended (see `ended`).
+            let failed = py.detach(|| {
                 let mut guards: Vec<_> = workers.iter().map(Worker::slot).collect();
                 let envs = own.iter_mut().chain(guards.iter_mut().flat_map(|g| g.envs.iter_mut()));
                 let chosen = |i: usize| mask.as_ref().is_none_or(|m| m[i]);
+                let mut failed = None;
                 match out {
                     Slice::F32(s) => {
                         for (i, (e, o)) in envs.zip(s.chunks_mut(per_env)).enumerate().filter(|(i, _)| chosen(*i)) {
-                            e.reset(seed.map(|s| s.wrapping_add(i as u64)));
+                            if let Err(err) = e.reset(seed.map(|s| s.wrapping_add(i as u64))) {
+                                failed.get_or_insert(err);
+                            }
                             e.write_observations(ObsOut::F32(o), true);
                         }
                     }
                     Slice::U8(s) => {
                         for (i, (e, o)) in envs.zip(s.chunks_mut(per_env)).enumerate().filter(|(i, _)| chosen(*i)) {
-                            e.reset(seed.map(|s| s.wrapping_add(i as u64)));
+                            if let Err(err) = e.reset(seed.map(|s| s.wrapping_add(i as u64))) {
+                                failed.get_or_insert(err);
+                            }
                             e.write_observations(ObsOut::U8(o), true);
                         }
                     }
                 }
+                failed
             });
-            Ok(())
+            failed.map_or(Ok(()), |e| Err(engine_error(e)))
         })
     }
 

@@ -66,7 +66,7 @@ fn recording(c: &mut Criterion) {
         b.iter(|| {
             let out = env.step(&[Action::BuiltinAi]).expect("step");
             if out.terminated || out.truncated {
-                env.reset();
+                env.reset().unwrap();
             }
         })
     });
@@ -79,7 +79,7 @@ fn recording(c: &mut Criterion) {
             let out = env.step(&actions).expect("step");
             recorder.record(&env, &actions);
             if out.terminated || out.truncated {
-                env.reset();
+                env.reset().unwrap();
                 let done = std::mem::replace(&mut recorder, Recorder::start(&env));
                 black_box(done.finish().to_bytes().len());
             }
@@ -97,7 +97,7 @@ fn recording(c: &mut Criterion) {
         })
     });
     let mut env = match_env();
-    env.reset();
+    env.reset().unwrap();
     let mut recorder = Recorder::start(&env);
     loop {
         let out = env.step(&[Action::BuiltinAi]).expect("step");

@@ -60,13 +60,13 @@ fn a_3000_step_match_round_trips_bit_identically() {
 fn later_episodes_and_mid_episode_starts_reproduce() {
     let mut env = Env::new(scenario("academy_3_vs_1_with_keeper"), 3).expect("env");
     record_episode(&mut env);
-    env.reset();
+    env.reset().unwrap();
     let second = record_episode(&mut env);
     assert_eq!(second.start, Start::Reset { seed: 3, episode: 1 });
     second.simulate(|_, _| {}).expect("episode 1 reproduces");
 
     // Started mid-episode: the start state travels as a snapshot.
-    env.reset();
+    env.reset().unwrap();
     for _ in 0..5 {
         env.step(&[Action::Right]).expect("step");
     }

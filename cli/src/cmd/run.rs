@@ -286,7 +286,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     let start = Instant::now();
     for i in 0..args.episodes {
         if i > 0 {
-            env.reset();
+            env.reset().map_err(|source| CliError::step(env.info(), source))?;
             if let Some(line) = lessons.as_mut().and_then(|l| l.after_reset(&env, i))
                 && !args.json
             {

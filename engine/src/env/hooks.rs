@@ -64,7 +64,8 @@ pub trait Hooks: Send + Sync + fmt::Debug {
     /// observation.
     ///
     /// # Errors
-    /// A hook that fails; the env still resets, and the error is reported by the next step.
+    /// A hook that fails; [`Env::reset`](super::Env::reset) returns it, the episode is over
+    /// (stepping it returns the same error) and the next reset starts the following episode.
     fn reset(&mut self, view: &HookView<'_>) -> Result<(), EngineError>;
 
     /// Runs after a step: adds each controller's hook reward into `rewards` (one slot per

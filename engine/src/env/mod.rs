@@ -263,31 +263,40 @@ impl Env {
             fingerprint: 0,
         };
         env.fingerprint = env.compute_fingerprint();
-        env.begin(0);
-        if let Some(e) = env.state.hook_error.take() {
-            return Err(e);
-        }
+        env.begin(0)?;
         Ok(env)
     }
 
     /// Starts the next episode (the same one again if no step was taken since the last start).
-    pub fn reset(&mut self) {
+    ///
+    /// # Errors
+    /// A hook that fails at the episode's start ([`Hooks::reset`], e.g. a script's `fn reset`
+    /// throwing; [`EngineError::Script`] with its diagnostic). The episode is then over before
+    /// it began: stepping it returns the same error, and the next reset starts the episode after
+    /// it (it is never replayed in a loop).
+    pub fn reset(&mut self) -> Result<(), EngineError> {
         let episode = if self.state.fresh { self.state.episode } else { self.state.episode + 1 };
-        self.begin(episode);
+        self.begin(episode)
     }
 
     /// Reseeds and starts episode 0 of the new seed (Gymnasium's `reset(seed=…)`).
-    pub fn reset_with_seed(&mut self, seed: u64) {
+    ///
+    /// # Errors
+    /// As [`Env::reset`].
+    pub fn reset_with_seed(&mut self, seed: u64) -> Result<(), EngineError> {
         self.state.seed = seed;
-        self.begin(0);
+        self.begin(0)
     }
 
     /// Reseeds and starts 0-based episode `episode` of `seed`: the state the `episode`-th reset
     /// after [`Env::reset_with_seed`] would give (episodes do not depend on earlier ones). Replays
     /// use it to start where a recording started.
-    pub fn reset_to_episode(&mut self, seed: u64, episode: u64) {
+    ///
+    /// # Errors
+    /// As [`Env::reset`].
+    pub fn reset_to_episode(&mut self, seed: u64, episode: u64) -> Result<(), EngineError> {
         self.state.seed = seed;
-        self.begin(episode);
+        self.begin(episode)
     }
 
     /// The seed of the current episodes (set at construction or by the last reseeding reset).
@@ -295,7 +304,7 @@ impl Env {
         self.state.seed
     }
 
-    fn begin(&mut self, episode: u64) {
+    fn begin(&mut self, episode: u64) -> Result<(), EngineError> {
         if let Some(hooks) = self.hooks.as_mut()
             && let Some(scenario) = hooks.poll_scenario()
             && let Err(e) = self.swap_scenario(scenario)
@@ -345,8 +354,16 @@ impl Env {
         self.state.hook_error = None;
         if let Some(hooks) = self.hooks.as_mut() {
             let view = hook_view(&self.state, &self.scenario, &[]);
-            self.state.hook_error = hooks.reset(&view).err();
+            if let Err(e) = hooks.reset(&view) {
+                // The episode is spent: not fresh, so the next reset moves on to the next one
+                // instead of replaying this failure for ever; over, so it cannot be stepped.
+                self.state.fresh = false;
+                self.state.done = true;
+                self.state.hook_error = Some(e.clone());
+                return Err(e);
+            }
         }
+        Ok(())
     }
 
     /// Moves to the next lesson when the current one's criterion holds over its window (the

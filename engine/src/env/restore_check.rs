@@ -232,7 +232,7 @@ mod tests {
                                 break;
                             }
                         }
-                        other.reset();
+                        other.reset().unwrap();
                     }
                     true
                 });

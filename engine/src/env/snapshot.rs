@@ -49,7 +49,8 @@ pub(crate) struct EnvState {
     pub(super) score_diff: i32,
     /// GRF's anti-stalling counter: steps in a row that ended with a set piece pending.
     pub(super) waiting_for_game: u32,
-    /// The hooks failed at the last reset; the next step reports it (transient: not saved).
+    /// The hooks failed at the last reset, which returned this error; every step of the episode
+    /// returns it again (transient: not saved).
     #[serde(skip)]
     pub(super) hook_error: Option<EngineError>,
     /// Progress through the curriculum (empty without one).

@@ -33,13 +33,13 @@ impl Env {
         if actions.len() != self.state.controllers.len() {
             return Err(EngineError::ActionCount { expected: self.state.controllers.len(), got: actions.len() });
         }
+        if let Some(e) = &self.state.hook_error {
+            // The hooks failed at reset (which returned this error): the episode cannot be
+            // played, and says why until the next reset.
+            return Err(e.clone());
+        }
         if self.state.done {
             return Err(EngineError::EpisodeOver);
-        }
-        if let Some(e) = self.state.hook_error.take() {
-            // The hooks failed at reset: the episode cannot be scored.
-            self.state.done = true;
-            return Err(e);
         }
         self.state.fresh = false;
         self.state.game.clear_events();

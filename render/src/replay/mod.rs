@@ -198,7 +198,7 @@ impl Replay {
             Start::Reset { seed, episode } => {
                 let mut env = Env::with_config(self.scenario.clone(), self.config, *seed)?;
                 if *episode != 0 {
-                    env.reset_to_episode(*seed, *episode);
+                    env.reset_to_episode(*seed, *episode)?;
                 }
                 Ok(env)
             }

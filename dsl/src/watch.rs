@@ -2,22 +2,29 @@
 //!
 //! A background thread watches the folders of the scenario file and of every script it names
 //! (folders, not files, so that an editor's save-by-rename, or a file deleted and re-created, is
-//! still seen), batches bursts of writes (debounced, 100 ms), and recompiles. A good compile
-//! becomes the new *generation*; a failed one is reported (see [`Watched::on_event`]) and the last
-//! good generation stays. Envs built with [`Watched::env`] poll at each reset and switch, between
-//! episodes and all at once, to the newest generation (scenario and scripts together): a broken
-//! version never reaches a step.
+//! still seen) and batches bursts of events (debounced, 100 ms). Only a change of **content**
+//! recompiles: after each batch the watched files are hashed, and nothing happens unless a hash
+//! differs from the last compile's (reading a file, the compile's own reads, `touch`, a save of
+//! the same text: no reload). A good compile becomes the new *generation*; a failed one is
+//! reported once (see [`Watched::on_event`]) and not again until the files change, and the last
+//! good generation stays. Each compile runs on a thread of its own: one that does not finish in
+//! [`COMPILE_TIMEOUT`] is reported and the watcher goes on. Envs built with [`Watched::env`] poll
+//! at each reset and switch, between episodes and all at once, to the newest generation (scenario
+//! and scripts together): a broken version never reaches a step.
 
 use std::collections::BTreeSet;
+use std::hash::{DefaultHasher, Hash, Hasher};
+use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::mpsc::{Receiver, RecvTimeoutError, channel};
+use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, channel};
 use std::sync::{Arc, Mutex, PoisonError, Weak};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use miette::Diagnostic;
-use notify_debouncer_full::notify::RecursiveMode;
-use notify_debouncer_full::{DebounceEventResult, new_debouncer};
+use notify_debouncer_full::notify::event::{AccessKind, AccessMode};
+use notify_debouncer_full::notify::{EventKind, RecursiveMode};
+use notify_debouncer_full::{DebounceEventResult, DebouncedEvent, new_debouncer};
 use thiserror::Error;
 use touchline_engine::{EngineError, Env, EnvConfig, HookOutcome, HookView, Hooks, Scenario};
 
@@ -45,7 +52,19 @@ pub enum WatchError {
         /// The watcher's error.
         message: String,
     },
+    /// A compile did not finish in [`COMPILE_TIMEOUT`]; the watcher goes on, and a later change
+    /// compiles again.
+    #[error("`{path}` did not compile within {} s; the watcher goes on with the last good version", COMPILE_TIMEOUT.as_secs())]
+    #[diagnostic(code(tl::S007), help("save the file again once it is fixed"))]
+    Timeout {
+        /// The scenario.
+        path: String,
+    },
 }
+
+/// How long one compile may take before the watcher reports it and goes on (it keeps waiting
+/// for the compile's result, which applies if it is still the newest).
+pub const COMPILE_TIMEOUT: Duration = Duration::from_secs(10);
 
 /// One good compile: the scenario and its scripts.
 #[derive(Clone, Debug)]
@@ -145,13 +164,71 @@ fn concerns(files: &[PathBuf], event_path: &Path) -> bool {
     })
 }
 
+/// Compiles `spec` on a thread of its own, sending the result with `attempt` on `tx`.
+fn compile_in_background(spec: &str, options: ScriptOptions, attempt: u64, tx: &Sender<Message>) {
+    let (owned, sender) = (spec.to_owned(), tx.clone());
+    let spawned = std::thread::Builder::new().name("touchline-compile".into()).spawn(move || {
+        let result = compile(&owned, options);
+        let _ = sender.send(Message::Compiled { attempt, result: Box::new(result) });
+    });
+    if let Err(e) = spawned {
+        let error = WatchError::Watcher { path: spec.to_owned(), message: format!("no thread to compile on: {e}") };
+        let _ = tx.send(Message::Compiled { attempt, result: Box::new(Err(error)) });
+    }
+}
+
+/// What the watcher thread hears: a batch of file events, or a compile's result.
+enum Message {
+    Files(DebounceEventResult),
+    Compiled { attempt: u64, result: Box<Result<Build, WatchError>> },
+}
+
+/// Largest file hashed to tell whether it changed (a scenario or a script is far smaller).
+const MAX_HASHED_BYTES: u64 = 64 * 1024 * 1024;
+
+/// A hash of `file`'s content: `None` for a file that is missing, unreadable or not a regular file
+/// (which is not opened: a FIFO would block the watcher).
+fn content_hash(file: &Path) -> Option<u64> {
+    if !std::fs::metadata(file).ok()?.is_file() {
+        return None;
+    }
+    let mut bytes = Vec::new();
+    std::fs::File::open(file).ok()?.take(MAX_HASHED_BYTES).read_to_end(&mut bytes).ok()?;
+    let mut hasher = DefaultHasher::new();
+    bytes.hash(&mut hasher);
+    Some(hasher.finish())
+}
+
+/// The content hashes of `files`, in order.
+fn content_hashes(files: &[PathBuf]) -> Vec<(PathBuf, Option<u64>)> {
+    files.iter().map(|f| (f.clone(), content_hash(f))).collect()
+}
+
+/// Whether an event may mean new content: not a file being opened or read (the compile's own
+/// reads, an editor or `cat` looking at it), but closing a file written counts.
+fn may_change(event: &DebouncedEvent) -> bool {
+    match event.kind {
+        EventKind::Access(AccessKind::Close(AccessMode::Write)) => true,
+        EventKind::Access(_) => false,
+        _ => true,
+    }
+}
+
 impl Watched {
     /// Compiles `spec` and starts watching its files.
     ///
     /// # Errors
     /// The first compile's diagnostics (nothing is watched then), or a watcher that cannot start.
+    /// The first compile, too, runs on a thread of its own: one that does not finish in
+    /// [`COMPILE_TIMEOUT`] is [`WatchError::Timeout`].
     pub fn new(spec: &str, options: ScriptOptions) -> Result<Watched, WatchError> {
-        let build = compile(spec, options)?;
+        let (tx, rx) = channel();
+        compile_in_background(spec, options, 0, &tx);
+        let build = match rx.recv_timeout(COMPILE_TIMEOUT) {
+            Ok(Message::Compiled { result, .. }) => (*result)?,
+            _ => return Err(WatchError::Timeout { path: spec.to_owned() }),
+        };
+        let seen = content_hashes(&build.files);
         let watched_folders = folders(&build.files);
         let shared = Arc::new(Shared {
             spec: spec.to_owned(),
@@ -160,9 +237,11 @@ impl Watched {
             generation: AtomicU64::new(1),
             listener: Mutex::new(None),
         });
-        let (tx, rx) = channel();
-        let mut debouncer = new_debouncer(Duration::from_millis(100), None, tx)
-            .map_err(|e| WatchError::Watcher { path: spec.to_owned(), message: e.to_string() })?;
+        let events = tx.clone();
+        let mut debouncer = new_debouncer(Duration::from_millis(100), None, move |batch| {
+            let _ = events.send(Message::Files(batch));
+        })
+        .map_err(|e| WatchError::Watcher { path: spec.to_owned(), message: e.to_string() })?;
         for folder in &watched_folders {
             debouncer
                 .watch(folder, RecursiveMode::NonRecursive)
@@ -171,7 +250,11 @@ impl Watched {
         let weak = Arc::downgrade(&shared);
         std::thread::Builder::new()
             .name("touchline-watch".into())
-            .spawn(move || watch_loop(&weak, &rx, debouncer, watched_folders))
+            .spawn(move || {
+                let mut watcher =
+                    Watcher { shared: weak, tx, debouncer, watching: watched_folders, seen, attempt: 0, pending: None };
+                watcher.run(&rx);
+            })
             .map_err(|e| WatchError::Watcher { path: spec.to_owned(), message: e.to_string() })?;
         Ok(Watched { shared })
     }
@@ -204,42 +287,91 @@ impl Watched {
     }
 }
 
-/// The watcher thread: recompiles after each batch of changes to the watched files, until the
+type Debouncer = notify_debouncer_full::Debouncer<
+    notify_debouncer_full::notify::RecommendedWatcher,
+    notify_debouncer_full::RecommendedCache,
+>;
+
+/// The watcher thread's state: recompiles when the content of the watched files changes, until the
 /// [`Watched`] and every env built from it are gone.
-fn watch_loop(
-    shared: &Weak<Shared>,
-    rx: &Receiver<DebounceEventResult>,
-    mut debouncer: notify_debouncer_full::Debouncer<
-        notify_debouncer_full::notify::RecommendedWatcher,
-        notify_debouncer_full::RecommendedCache,
-    >,
-    mut watching: BTreeSet<PathBuf>,
-) {
-    loop {
-        let events = match rx.recv_timeout(Duration::from_millis(200)) {
-            Ok(Ok(events)) => events,
-            Ok(Err(_)) => Vec::new(),
-            Err(RecvTimeoutError::Timeout) => {
-                if shared.strong_count() == 0 {
-                    return;
+struct Watcher {
+    shared: Weak<Shared>,
+    /// Where compile threads send their results.
+    tx: Sender<Message>,
+    debouncer: Debouncer,
+    watching: BTreeSet<PathBuf>,
+    /// Each watched file's content hash when it was last compiled (well or not).
+    seen: Vec<(PathBuf, Option<u64>)>,
+    /// The newest compile started; older results are dropped.
+    attempt: u64,
+    /// The newest compile while it runs: when it started, and whether its slowness was reported.
+    pending: Option<(Instant, bool)>,
+}
+
+impl Watcher {
+    fn run(&mut self, rx: &Receiver<Message>) {
+        loop {
+            let message = match rx.recv_timeout(Duration::from_millis(200)) {
+                Ok(message) => message,
+                Err(RecvTimeoutError::Timeout) => {
+                    let Some(shared) = self.shared.upgrade() else { return };
+                    self.report_slow_compile(&shared);
+                    continue;
                 }
-                continue;
+                Err(RecvTimeoutError::Disconnected) => return,
+            };
+            let Some(shared) = self.shared.upgrade() else { return };
+            match message {
+                Message::Files(Ok(events)) => self.on_files(&shared, &events),
+                Message::Files(Err(_)) => {}
+                Message::Compiled { attempt, result } if attempt == self.attempt => {
+                    self.pending = None;
+                    self.on_compiled(&shared, *result);
+                }
+                // Superseded by a newer edit.
+                Message::Compiled { .. } => {}
             }
-            Err(RecvTimeoutError::Disconnected) => return,
-        };
-        let Some(shared) = shared.upgrade() else { return };
-        let files = shared.current().1.files.clone();
-        if !events.iter().any(|e| e.paths.iter().any(|p| concerns(&files, p))) {
-            continue;
         }
-        match compile(&shared.spec, shared.options) {
+    }
+
+    /// A batch of events: compiles again when a watched file's content differs from its last
+    /// compile's, and only then (so one edit is one compile, and a failure is reported once).
+    fn on_files(&mut self, shared: &Shared, events: &[DebouncedEvent]) {
+        let files = shared.current().1.files.clone();
+        if !events.iter().any(|e| may_change(e) && e.paths.iter().any(|p| concerns(&files, p))) {
+            return;
+        }
+        let now = content_hashes(&files);
+        let changed = now.iter().any(|(f, hash)| self.seen.iter().find(|(g, _)| g == f).is_none_or(|(_, h)| h != hash));
+        if !changed {
+            return;
+        }
+        for (file, hash) in now {
+            match self.seen.iter_mut().find(|(g, _)| *g == file) {
+                Some(entry) => entry.1 = hash,
+                None => self.seen.push((file, hash)),
+            }
+        }
+        self.attempt += 1;
+        self.pending = Some((Instant::now(), false));
+        compile_in_background(&shared.spec, shared.options, self.attempt, &self.tx);
+    }
+
+    fn on_compiled(&mut self, shared: &Shared, result: Result<Build, WatchError>) {
+        match result {
             Ok(build) => {
                 let wanted = folders(&build.files);
-                for folder in wanted.difference(&watching) {
+                for folder in wanted.difference(&self.watching) {
                     // A folder that cannot be watched is reported by the next failed compile.
-                    let _ = debouncer.watch(folder, RecursiveMode::NonRecursive);
+                    let _ = self.debouncer.watch(folder, RecursiveMode::NonRecursive);
                 }
-                watching.extend(wanted);
+                self.watching.extend(wanted);
+                // Files the new version reads for the first time (a new import or script).
+                for file in &build.files {
+                    if !self.seen.iter().any(|(g, _)| g == file) {
+                        self.seen.push((file.clone(), content_hash(file)));
+                    }
+                }
                 let generation = {
                     let mut current = shared.current.lock().unwrap_or_else(PoisonError::into_inner);
                     *current = (current.0 + 1, Arc::new(build));
@@ -249,6 +381,18 @@ fn watch_loop(
                 shared.tell(&WatchEvent::Reloaded { generation });
             }
             Err(error) => shared.tell(&WatchEvent::Failed(&error)),
+        }
+    }
+
+    /// Reports, once, a compile running longer than [`COMPILE_TIMEOUT`]; the watcher goes on
+    /// (its result still applies if no newer edit came).
+    fn report_slow_compile(&mut self, shared: &Shared) {
+        if let Some((started, reported)) = &mut self.pending
+            && !*reported
+            && started.elapsed() > COMPILE_TIMEOUT
+        {
+            *reported = true;
+            shared.tell(&WatchEvent::Failed(&WatchError::Timeout { path: shared.spec.clone() }));
         }
     }
 }

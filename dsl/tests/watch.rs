@@ -67,27 +67,101 @@ fn the_env_follows_edits_and_keeps_the_last_good_version() {
     std::fs::write(&file, script("2.0")).unwrap();
     eventually("the edit to compile", || watched.generation() == 2);
     assert_eq!(reward(&mut env), 1.0, "the running episode keeps its version");
-    env.reset();
+    env.reset().unwrap();
     assert_eq!(reward(&mut env), 2.0);
 
     // A broken edit is reported and the last good version keeps playing.
     std::fs::write(&file, "fn reward(s) { let = ; }").unwrap();
     eventually("the broken edit to be reported", || !failures.lock().unwrap().is_empty());
     assert!(failures.lock().unwrap()[0].contains("tl::S002"));
-    env.reset();
+    env.reset().unwrap();
     assert_eq!(reward(&mut env), 2.0);
     assert_eq!(watched.generation(), 2);
 
     // Fixed by a save-by-rename (delete + re-create at the same path).
     write_atomically(&file, &script("3.0"));
     eventually("the fix to compile", || watched.generation() == 3);
-    env.reset();
+    env.reset().unwrap();
     assert_eq!(reward(&mut env), 3.0);
 
     // The scenario file itself is watched too: a new weight.
     scenario.rewards[0].weight = 10.0;
     std::fs::write(&spec, serde_json::to_string(&scenario).unwrap()).unwrap();
     eventually("the scenario edit to compile", || watched.generation() == 4);
-    env.reset();
+    env.reset().unwrap();
     assert_eq!(reward(&mut env), 30.0);
+}
+
+/// Counts what a watcher reports.
+#[derive(Default)]
+struct Reports {
+    reloads: Vec<u64>,
+    failures: Vec<String>,
+}
+
+fn watched_script(dir: &Path, text: &str) -> (Watched, PathBuf, Arc<Mutex<Reports>>) {
+    let mut scenario = load("academy_empty_goal_close").unwrap();
+    scenario.rewards = vec![RewardTerm { reward: RewardKind::Script { path: "r.rhai".into() }, weight: 1.0 }];
+    let spec = dir.join("scenario.json");
+    std::fs::write(&spec, serde_json::to_string(&scenario).unwrap()).unwrap();
+    let file = dir.join("r.rhai");
+    std::fs::write(&file, text).unwrap();
+    let watched = Watched::new(spec.to_str().unwrap(), ScriptOptions::default()).unwrap();
+    let reports = Arc::new(Mutex::new(Reports::default()));
+    let seen = Arc::clone(&reports);
+    watched.on_event(move |event| match event {
+        WatchEvent::Reloaded { generation } => seen.lock().unwrap().reloads.push(*generation),
+        WatchEvent::Failed(error) => seen.lock().unwrap().failures.push(touchline_dsl::render_plain(*error)),
+        _ => {}
+    });
+    (watched, file, reports)
+}
+
+/// Reads the file (and the compile's own reads) for `secs`, as an editor or `cat` would.
+fn keep_reading(file: &Path, secs: u64) {
+    let start = Instant::now();
+    while start.elapsed() < Duration::from_secs(secs) {
+        let _ = std::fs::read_to_string(file).unwrap();
+        std::thread::sleep(Duration::from_millis(50));
+    }
+}
+
+/// Issue 17, item 10: before, the first edit started reloads that never stopped (3,120 in 90 s:
+/// each compile's reads of the file were taken as changes), and a broken file was reported 10-40
+/// times a second. Only content changes count now: reading, `touch`ing or saving the same text
+/// reloads nothing, one edit is one reload, a broken edit is one report.
+#[test]
+fn only_content_changes_reload_and_each_failure_is_reported_once() {
+    let dir = folder().join("once");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (watched, file, reports) = watched_script(&dir, &script("1.0"));
+
+    // Unchanged, read over and over, saved with the same text: nothing.
+    keep_reading(&file, 2);
+    std::fs::write(&file, script("1.0")).unwrap();
+    keep_reading(&file, 2);
+    assert_eq!(watched.generation(), 1);
+    assert!(reports.lock().unwrap().reloads.is_empty(), "reloads: {:?}", reports.lock().unwrap().reloads);
+
+    // One edit: one reload, and no more while the file is read.
+    std::fs::write(&file, script("2.0")).unwrap();
+    eventually("the edit to compile", || watched.generation() == 2);
+    keep_reading(&file, 3);
+    assert_eq!(reports.lock().unwrap().reloads, [2]);
+
+    // A broken edit: one report, however often the file is read or saved unchanged.
+    std::fs::write(&file, "fn reward(s) { let = ; }").unwrap();
+    eventually("the broken edit to be reported", || !reports.lock().unwrap().failures.is_empty());
+    keep_reading(&file, 2);
+    std::fs::write(&file, "fn reward(s) { let = ; }").unwrap();
+    keep_reading(&file, 2);
+    let failures = reports.lock().unwrap().failures.len();
+    assert_eq!(failures, 1, "{:?}", reports.lock().unwrap().failures);
+
+    // Fixed: one reload again.
+    std::fs::write(&file, script("3.0")).unwrap();
+    eventually("the fix to compile", || watched.generation() == 3);
+    keep_reading(&file, 1);
+    assert_eq!(reports.lock().unwrap().reloads, [2, 3]);
+    assert_eq!(reports.lock().unwrap().failures.len(), 1);
 }

@@ -1,9 +1,10 @@
 //! `touchline watch FILE`: play episodes of a scenario file over and over while it is edited.
 //!
 //! The scenario (`.json` now, `.tl` once the language lands) and every script it names are
-//! watched ([`touchline_dsl::Watched`]); each change is recompiled at once and its diagnostics are
-//! shown on stderr; the next episode plays the new version, or the last good one if the change did
-//! not compile. One line per episode on stdout.
+//! watched ([`touchline_dsl::Watched`]); each change of their content is recompiled at once and
+//! its diagnostics are shown on stderr, once (reading a file or saving it unchanged does nothing);
+//! the next episode plays the new version, or the last good one if the change did not compile. A
+//! script failing while it plays is shown once per version. One line per episode on stdout.
 
 use std::io::{self, Write};
 use std::time::Duration;
@@ -91,9 +92,19 @@ pub(crate) fn run(args: &WatchArgs) -> Result<(), CliError> {
     let mut actions = vec![Action::Idle; env.num_controllers()];
     let mut out = io::stdout().lock();
     let mut episode = 0_u64;
+    // The last script failure shown in full, with the version it came from: the same failure in
+    // the same version is shown once, then only counted in the episode lines.
+    let mut shown: Option<(u64, String)> = None;
     while args.episodes.is_none_or(|n| episode < n) {
-        if episode > 0 {
-            env.reset();
+        if episode > 0
+            && let Err(e) = env.reset()
+        {
+            // A script's `reset` failed: this episode is spent; the next reset moves on.
+            writeln!(out, "episode {episode} (version {}): a script failed at reset", watched.generation())?;
+            show_once(&mut shown, watched.generation(), &e.to_string());
+            std::thread::sleep(Duration::from_millis(500));
+            episode += 1;
+            continue;
         }
         let generation = watched.generation();
         let mut reward = 0.0_f64;
@@ -122,7 +133,7 @@ pub(crate) fn run(args: &WatchArgs) -> Result<(), CliError> {
             )?,
             Some(message) => {
                 writeln!(out, "episode {episode} (version {generation}): a script failed at step {}", info.steps)?;
-                eprintln!("{message}");
+                show_once(&mut shown, generation, &message);
                 // Give the user time to fix it rather than failing thousands of times a second.
                 std::thread::sleep(Duration::from_millis(500));
             }
@@ -134,4 +145,13 @@ pub(crate) fn run(args: &WatchArgs) -> Result<(), CliError> {
         episode += 1;
     }
     Ok(())
+}
+
+/// Prints a script failure unless the same one, from the same version, was the last shown.
+fn show_once(shown: &mut Option<(u64, String)>, generation: u64, message: &str) {
+    if shown.as_ref().is_some_and(|(g, m)| *g == generation && m == message) {
+        return;
+    }
+    eprintln!("{message}");
+    *shown = Some((generation, message.to_owned()));
 }

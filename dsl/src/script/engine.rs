@@ -91,15 +91,15 @@ impl Meter {
         if total > limit { Err(Box::new(EvalAltResult::ErrorTooManyOperations(Position::NONE))) } else { Ok(()) }
     }
 
-    /// One operation (rhai's count `ops`): the call's operations so far, charges included.
-    fn tick(&self, ops: u64) -> u64 {
+    /// One operation (rhai's count `ops`): the operations counted so far, and with the charges.
+    fn tick(&self, ops: u64) -> (u64, u64) {
         let ticks = self.ticks.fetch_add(1, Ordering::Relaxed) + 1;
         if ops <= self.last.swap(ops, Ordering::Relaxed) {
             // A built-in called a closure (or a closure returned): such a call costs far more
             // than an operation.
             self.charged.fetch_add(CLOSURE_CALL_COST, Ordering::Relaxed);
         }
-        ticks.saturating_add(self.charged())
+        (ticks, ticks.saturating_add(self.charged()))
     }
 
     fn overran(&self) -> bool {
@@ -155,11 +155,12 @@ pub(crate) fn sandboxed(limits: &Limits, strict: bool, sink: &PrintSink, meter: 
     let max = limits.operations;
     let watched = Arc::clone(meter);
     engine.on_progress(move |ops| {
-        let spent = watched.tick(ops);
+        let (ticks, spent) = watched.tick(ops);
         if spent > max {
             return Some(Dynamic::from(OUT_OF_OPERATIONS));
         }
-        (spent % TIME_GUARD_EVERY == 0 && watched.overran()).then(|| Dynamic::from(OUT_OF_TIME))
+        // On the count of operations alone: charges jump, and would skip multiples.
+        (ticks.is_multiple_of(TIME_GUARD_EVERY) && watched.overran()).then(|| Dynamic::from(OUT_OF_TIME))
     });
     let out = Arc::clone(sink);
     engine.on_print(move |line| push(&out, line));

@@ -27,6 +27,7 @@ pub mod excerpt;
 mod format;
 mod load;
 mod print;
+mod source_file;
 pub mod stdlib;
 mod suggest;
 pub mod syntax;

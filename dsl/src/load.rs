@@ -47,7 +47,7 @@ pub fn load(spec: &str) -> Result<Scenario, LoadError> {
 pub fn load_file(path: &Path) -> Result<Scenario, LoadError> {
     let origin = path.display().to_string();
     let text =
-        std::fs::read_to_string(path).map_err(|source| LoadError::Unreadable { path: origin.clone(), source })?;
+        crate::source_file::read_text(path).map_err(|source| LoadError::Unreadable { path: origin.clone(), source })?;
     load_json(&text, &origin)
 }
 

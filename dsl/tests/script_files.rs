@@ -94,3 +94,55 @@ fn binary_files_are_refused_without_echo() {
     let message = compile_error("bin.rhai", &dir);
     assert!(message.contains("tl::S001") && message.contains("UTF-8"), "{message}");
 }
+
+/// Runs `f` on another thread; fails if it takes over 10 s (a blocked or endless read).
+fn within_10_s<T: Send + 'static>(what: &str, f: impl FnOnce() -> T + Send + 'static) -> T {
+    let (tx, rx) = mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = tx.send(f());
+    });
+    rx.recv_timeout(Duration::from_secs(10)).unwrap_or_else(|_| panic!("{what}: still reading after 10 s"))
+}
+
+/// A rendered diagnostic on one line (miette wraps long messages).
+fn flat(message: &str) -> String {
+    message.split_whitespace().filter(|w| *w != "│").collect::<Vec<_>>().join(" ")
+}
+
+/// The other files a scenario names are read the same careful way: a FIFO or a device as an
+/// import, a `start from` state, a `.tl` or `.json` scenario is an error, at once.
+#[test]
+fn scenario_files_that_are_pipes_or_devices_are_errors() {
+    let dir = folder("sources");
+    let fifo = dir.join("pipe.tl");
+    assert!(std::process::Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let json_fifo = dir.join("pipe.json");
+    assert!(std::process::Command::new("mkfifo").arg(&json_fifo).status().unwrap().success());
+    std::os::unix::fs::symlink("/dev/zero", dir.join("zero.state")).unwrap();
+    let main = dir.join("main.tl");
+    std::fs::write(
+        &main,
+        "import \"pipe.tl\"\nscenario s {\n  extends academy_empty_goal_close\n}\n\
+         scenario t {\n  extends academy_empty_goal_close\n  start from \"zero.state\"\n}\n",
+    )
+    .unwrap();
+    let message = within_10_s("an import that is a FIFO", move || {
+        touchline_dsl::compile_file(&main).err().map(|d| d.render_plain()).unwrap_or_default()
+    });
+    assert!(flat(&message).contains("not a regular file"), "{message}");
+    let message = within_10_s("a .tl that is a FIFO", move || {
+        touchline_dsl::compile_file(&fifo).err().map(|d| d.render_plain()).unwrap_or_default()
+    });
+    assert!(flat(&message).contains("not a regular file"), "{message}");
+    let message = within_10_s("a .json that is a FIFO", move || {
+        touchline_dsl::load_file(&json_fifo).err().map(|e| touchline_dsl::render_plain(&e)).unwrap_or_default()
+    });
+    assert!(message.contains("tl::E002"), "{message}");
+    let start = dir.join("start.tl");
+    std::fs::write(&start, "scenario t {\n  extends academy_empty_goal_close\n  start from \"zero.state\"\n}\n")
+        .unwrap();
+    let message = within_10_s("start from /dev/zero", move || {
+        touchline_dsl::compile_file(&start).err().map(|d| d.render_plain()).unwrap_or_default()
+    });
+    assert!(message.contains("tl::E121") && flat(&message).contains("not a regular file"), "{message}");
+}

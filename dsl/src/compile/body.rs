@@ -201,7 +201,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
 fn start_from(path: &syntax::Spanned<String>, s: &mut Scenario, r: &mut Reader<'_>) {
     let origin = std::path::Path::new(r.source.name());
     let full = origin.parent().unwrap_or(std::path::Path::new("")).join(&path.value);
-    match std::fs::read(&full) {
+    match crate::source_file::read_regular(&full, crate::source_file::MAX_SOURCE_BYTES) {
         Ok(bytes) => s.start_state = Some(bytes),
         Err(e) => r.error_help(
             Code::StartState,

@@ -61,7 +61,7 @@ pub fn compile(source: &str, origin: &str) -> Result<Compiled, Diagnostics> {
 /// `tl::E112` when the file cannot be read; otherwise as [`compile`].
 pub fn compile_file(path: &Path) -> Result<Compiled, Diagnostics> {
     let origin = path.display().to_string();
-    match std::fs::read_to_string(path) {
+    match crate::source_file::read_text(path) {
         Ok(text) => {
             let dir = path.parent().map(Path::to_path_buf);
             Compiler::default().run(text, &origin, dir, Some(path.to_path_buf()))
@@ -79,7 +79,7 @@ pub fn compile_file(path: &Path) -> Result<Compiled, Diagnostics> {
 /// [`compile_file`]; a file of presets only (a library others import) has each preset resolved
 /// and checked. Returns every diagnostic, errors and warnings.
 pub fn check_file(path: &Path) -> Diagnostics {
-    let text = match std::fs::read_to_string(path) {
+    let text = match crate::source_file::read_text(path) {
         Ok(text) => text,
         Err(_) => return compile_file(path).err().unwrap_or_default(),
     };
@@ -250,7 +250,7 @@ impl Compiler {
                 self.diags.push(too_deep(&source, import.span, "imports", "an import of an import …"));
                 continue;
             }
-            match std::fs::read_to_string(&path) {
+            match crate::source_file::read_text(&path) {
                 Ok(text) => {
                     self.files.push(path.clone());
                     let origin = path.display().to_string();

@@ -35,8 +35,8 @@
 //! ```
 //!
 //! Sandbox ([`Limits`]): each call has an operation budget (built-ins on collections charged by
-//! the size of what they go through, so that the budget bounds time: under 10 ms a call in every
-//! worst case we could write), a call-depth limit and size limits on strings, arrays and maps;
+//! the size of what they go through, so that the budget bounds time: about 10 ms a call in the
+//! worst cases we could write), a call-depth limit and size limits on strings, arrays and maps;
 //! variables must be declared (strict variables, checked when the script compiles); there is no
 //! `import`, no `eval`, no clock, no `sleep` (a call to either is refused when the script
 //! compiles, `tl::S008`), no randomness and no file or network access. Script files are regular

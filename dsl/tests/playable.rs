@@ -34,8 +34,10 @@ const EDITS: &[&str] = &[
 
 fn sources() -> Vec<(String, String)> {
     let names = stdlib::names().iter().copied().chain(stdlib::test_names());
+    // A stdlib scenario is extended rather than edited in place: its own `team` statements would
+    // make an added one a duplicate (`tl::E110`) and nothing would play.
     let mut all: Vec<(String, String)> =
-        names.filter_map(|n| Some((n.to_owned(), stdlib::tl_source(n)?.to_owned()))).collect();
+        names.map(|n| ("edited.tl".to_owned(), format!("scenario edited {{\n  extends {n}\n}}\n"))).collect();
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenarios");
     for entry in std::fs::read_dir(&dir).unwrap() {
         let path = entry.unwrap().path();
@@ -55,11 +57,11 @@ fn edited(source: &str, edits: &[usize]) -> String {
 }
 
 /// Compiles `text` (from `origin`) and, when it compiles, plays 3 episodes of up to 40 steps under
-/// `config`.
-fn compile_and_play(text: &str, origin: &str, config: EnvConfig) -> Result<(), String> {
-    let Ok(compiled) = compile(text, origin) else { return Ok(()) };
+/// `config`. Returns whether it played (it may not compile, or refuse `config` when built).
+fn compile_and_play(text: &str, origin: &str, config: EnvConfig) -> Result<bool, String> {
+    let Ok(compiled) = compile(text, origin) else { return Ok(false) };
     let dir = Path::new(origin).parent().unwrap_or(Path::new("."));
-    let Ok(mut env) = build_env(compiled.scenario, dir, config, 1) else { return Ok(()) };
+    let Ok(mut env) = build_env(compiled.scenario, dir, config, 1) else { return Ok(false) };
     for _ in 0..3 {
         for step in 0..40u32 {
             let actions: Vec<u32> = (0..env.num_controllers() as u32).map(|i| (step * 5 + i) % 19).collect();
@@ -73,7 +75,7 @@ fn compile_and_play(text: &str, origin: &str, config: EnvConfig) -> Result<(), S
         }
         env.reset().unwrap();
     }
-    Ok(())
+    Ok(true)
 }
 
 fn cases() -> u32 {
@@ -95,7 +97,7 @@ proptest! {
         let config = EnvConfig { left_agents: agents.0, right_agents: agents.1, ..EnvConfig::default() };
         let run = std::panic::catch_unwind(|| compile_and_play(&text, origin, config));
         match run {
-            Ok(Ok(())) => {}
+            Ok(Ok(_)) => {}
             Ok(Err(e)) => return Err(TestCaseError::fail(format!("{e}\n--- source ---\n{text}"))),
             Err(_) => return Err(TestCaseError::fail(format!("panicked\n--- source ---\n{text}"))),
         }
@@ -120,5 +122,19 @@ fn five_a_side_against_a_lone_keeper_warns_and_refuses_when_built() {
     };
     assert!(err.to_string().contains("swap"), "{err}");
     let idle = EnvConfig { left_agents: 0, ..EnvConfig::default() };
-    compile_and_play(text, "lone.tl", idle).unwrap();
+    assert!(compile_and_play(text, "lone.tl", idle).unwrap());
+}
+
+/// The edits give scenarios that play (about half of them; the rest fail to compile or refuse one
+/// left agent, by design): each stdlib scenario with each edit alone.
+#[test]
+fn many_single_edits_compile_and_play() {
+    let (mut played, mut total) = (0, 0);
+    for (origin, source) in sources().iter().filter(|(o, _)| o == "edited.tl") {
+        for e in 0..EDITS.len() {
+            total += 1;
+            played += usize::from(compile_and_play(&edited(source, &[e]), origin, EnvConfig::default()).unwrap());
+        }
+    }
+    assert!(played * 3 > total, "{played} of {total} played");
 }

@@ -13,13 +13,6 @@ pub struct Difficulty {
     /// (1 − θ)·100 ms of reaction time (grf.md §7.6). Fractional: the AI carries the remainder from
     /// one decision to the next, so the mean interval is exactly this and smooth in θ.
     pub reaction_ticks: f32,
-    /// Distance (m) within which the nearest player presses the ball carrier: 20·(0.3 + 0.7·θ).
-    /// GRF's hunting distance is (10 + 10·(1 − mindset)) m, less as the team tires and runs,
-    /// times the same 0.3 + 0.7·θ as every stat (GRF 2.10's AI); 20 m is its reach for a
-    /// defensive mindset. With it, θ = 1 beats θ = 0.05 / 0.6 / 0.95 by about +2.1 / +0.5 / +0.2
-    /// goals a match (`cargo run --release -p touchline-engine --example strength`), near GRF's
-    /// built-in agent against its easy, medium and hard sides.
-    pub hunt_distance: f32,
     /// Amplitude of the noise added to the value of each option (pass, shot, dribble). The same
     /// at every θ: GRF's AI has no decision noise tied to θ, its choices are as random at any θ
     /// and worse only through the players' weaker stats. Zero in deterministic scenarios (the
@@ -37,7 +30,6 @@ impl Difficulty {
         Difficulty {
             theta,
             reaction_ticks: 5.0 + 10.0 * (1.0 - theta),
-            hunt_distance: 20.0 * (0.3 + 0.7 * theta),
             decision_noise: DECISION_NOISE,
             aim_error: 1.0 - 0.85 * (0.3 + 0.7 * theta),
         }
@@ -53,7 +45,6 @@ mod tests {
         let easy = Difficulty::new(0.05);
         let hard = Difficulty::new(0.95);
         assert!(hard.reaction_ticks < easy.reaction_ticks);
-        assert!(hard.hunt_distance > easy.hunt_distance);
         assert!(hard.aim_error < easy.aim_error);
         assert_eq!(hard.decision_noise, easy.decision_noise);
         assert_eq!(Difficulty::new(1.0).reaction_ticks, 5.0);

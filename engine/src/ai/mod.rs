@@ -217,6 +217,42 @@ impl TeamAi {
         }
     }
 
+    /// Checks a decoded AI state against a team of `players` players in a match of `total`: every
+    /// per-player list as long as the team, every marked man a player of the match, every plan
+    /// finite, every θ in [0, 1]. For [`crate::Env::restore`]'s range checks: the AI indexes
+    /// these lists and steers by these numbers.
+    pub(crate) fn check(&self, players: usize, total: usize) -> Result<(), String> {
+        let side = self.side.name();
+        if self.plans.len() != players || !(self.marks.is_empty() || self.marks.len() == players) {
+            return Err(format!("the {side} AI's plans or marks do not fit a team of {players}"));
+        }
+        if self.player_difficulty.len() > players {
+            return Err(format!(
+                "the {side} AI has {} per-player θ for {players} players",
+                self.player_difficulty.len()
+            ));
+        }
+        if let Some(m) = self.marks.iter().flatten().find(|&&m| m >= total) {
+            return Err(format!("a {side} player marks player {m} of {total}"));
+        }
+        let thetas = std::iter::once(&self.difficulty).chain(self.player_difficulty.iter().flatten());
+        if thetas.clone().any(|d| !(0.0..=1.0).contains(&d.theta) || !d.reaction_ticks.is_finite()) {
+            return Err(format!("the {side} AI's difficulty is out of range"));
+        }
+        let finite = |v: Vec2| v.is_finite() && v.abs().max_element() <= 10_000.0;
+        if !self
+            .plans
+            .iter()
+            .all(|p| finite(p.target) && finite(p.look) && p.speed.is_finite() && p.speed.abs() <= 100.0)
+        {
+            return Err(format!("a {side} AI plan is not finite"));
+        }
+        if !self.think_carry.is_finite() {
+            return Err(format!("the {side} AI's timing is not finite"));
+        }
+        Ok(())
+    }
+
     /// Gives the team's player `index` his own θ (a `builtin(θ)` behaviour), or back the team's
     /// (`None`): his decisions (noise, pressing reach, aim) follow it.
     pub(crate) fn set_player_difficulty(&mut self, index: usize, theta: Option<f32>) {
@@ -257,7 +293,12 @@ impl TeamAi {
             } else if view.mode != GameMode::Normal {
                 set_piece::plan(view, g, &analysis, difficulty, rng)
             } else if view.owner == Some(g) && p.is_keeper() {
-                goalkeeper::distribute(view, g, view.tick - self.keeper_since.unwrap_or(view.tick), &analysis)
+                goalkeeper::distribute(
+                    view,
+                    g,
+                    view.tick.saturating_sub(self.keeper_since.unwrap_or(view.tick)),
+                    &analysis,
+                )
             } else if view.owner == Some(g) {
                 ball_carrier::plan(view, g, &analysis, difficulty, rng)
             } else if p.is_keeper() {

@@ -14,6 +14,9 @@ use crate::rng::MatchRng;
 const ARRIVAL_SPEED: f32 = 5.0;
 /// Fastest ground pass (m/s).
 const MAX_GROUND_PASS: f32 = 26.0;
+/// Fastest a pass leaves the foot (m/s): GRF's best possible touch, 30 m/s scaled by the kicking
+/// animation, measured at 15-17 m/s (a 50 m pass back to the keeper).
+const PASS_TOUCH_SPEED: f32 = 16.5;
 
 /// Distance (m) a rolling ball covers while slowing from `v0` to `v1` under GRF's grass friction
 /// a = -(c0 + c2·v²): s = ln((c0 + c2·v0²) / (c0 + c2·v1²)) / (2·c2).
@@ -72,10 +75,16 @@ pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2
     let dir = rotate_small(dir, rng.noise(error * 1.7).clamp(-0.19, 0.19));
     let velocity = match kick.kind {
         KickKind::ShortPass => {
-            let speed = ground_pass_speed(distance)
+            let wanted = (ground_pass_speed(distance)
                 * (1.0 + 0.1 * kick.power)
-                * (1.0 + rng.noise(0.05 * (1.0 - accuracy) + 0.01));
-            (dir * speed.min(MAX_GROUND_PASS)).extend(0.0)
+                * (1.0 + rng.noise(0.05 * (1.0 - accuracy) + 0.01)))
+            .min(MAX_GROUND_PASS);
+            // GRF's best possible touch: a pass leaves the foot at most PASS_TOUCH_SPEED; a
+            // quarter of the pace it lacks (up to 2.5 m/s) goes into lift, on top of the pass's
+            // own rise of 0.11 per unit of pace. A long ground pass is a bouncing one.
+            let speed = wanted.min(PASS_TOUCH_SPEED);
+            let lift = 0.11 * wanted + (0.25 * (wanted - speed)).min(2.5);
+            (dir * speed).extend(lift)
         }
         KickKind::LongPass => {
             // Driven pass: 14° elevation, first bounce at about 70 % of the way.
@@ -264,6 +273,30 @@ mod tests {
         // A long pass is led a fifth further forward.
         let long = pass_target(KickKind::LongPass, &alone[0], &alone, Vec2::X, 0.129);
         assert!((long.x - 1.2 * 7.74).abs() < 0.01, "{long}");
+    }
+
+    #[test]
+    fn a_long_ground_pass_leaves_at_the_touch_cap_and_bounces() {
+        // GRF: a 50 m pass back to the keeper leaves at 15-16 m/s and rises to about 1.7 m.
+        use crate::geometry::Side;
+        let kicker = player(Side::Left, 1, Vec2::ZERO);
+        let kick = Kick {
+            kind: KickKind::ShortPass,
+            target: super::super::KickTarget::Direction(Vec2::NEG_X),
+            height: 0.0,
+            power: 0.5,
+        };
+        let mut rng = MatchRng::new(3, 1, false);
+        let mut ball = Ball::at_rest(Vec2::ZERO);
+        launch(&mut ball, &kicker, &kick, Vec2::new(-50.0, 0.0), 1.0, &mut rng);
+        let ground = ball.velocity.truncate().length();
+        assert!((PASS_TOUCH_SPEED - 0.01..=PASS_TOUCH_SPEED + 0.01).contains(&ground), "{ground}");
+        let apex = ball.velocity.z * ball.velocity.z / (2.0 * GRAVITY);
+        assert!((1.0..2.5).contains(&apex), "apex {apex} m");
+        // A short one stays about the grass (GRF: 0.11 m/s of rise per m/s of pace).
+        let mut short = Ball::at_rest(Vec2::ZERO);
+        launch(&mut short, &kicker, &kick, Vec2::new(-10.0, 0.0), 1.0, &mut rng);
+        assert!(short.velocity.z * short.velocity.z / (2.0 * GRAVITY) < 0.15);
     }
 
     #[test]

@@ -3,12 +3,16 @@
 //! itself, or a diagnostic whose spans are not in its source.
 
 use std::path::Path;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use touchline_dsl::Diagnostics;
 use touchline_engine::EnvConfig;
 
 /// Steps the `play` target takes.
 pub const PLAY_STEPS: usize = 50;
+
+/// Inputs that got as far as a built env and were played (the driver reports the share).
+pub static PLAYED: AtomicU64 = AtomicU64::new(0);
 
 /// The `compile` target: compiles `text` as a `.tl` source; every diagnostic must point inside its
 /// source, on `char` boundaries, and render.
@@ -54,6 +58,7 @@ fn play_scenario(scenario: touchline_engine::Scenario, text: &str) {
     let Ok(mut env) = touchline_dsl::build_env(scenario, &dir, EnvConfig::default(), text.len() as u64) else {
         return;
     };
+    PLAYED.fetch_add(1, Ordering::Relaxed);
     let seed = text.bytes().fold(0u32, |h, b| h.wrapping_mul(31).wrapping_add(u32::from(b)));
     let actions = env.action_set().len() as u32;
     for step in 0..PLAY_STEPS {

@@ -9,7 +9,8 @@
 //!   TARGET   compile | json | play
 //! ```
 //!
-//! Prints the cases run and the crashes found every 30 s and at the end; exits 1 when any case
+//! Prints the cases run and the crashes found every 30 s and at the end (with, for `json` and
+//! `play`, how many inputs got as far as a built env and were played); exits 1 when any case
 //! crashed. The input under test is kept in `DIR/in-progress` (removed at a clean exit), so that
 //! one that kills the process (a stack overflow aborts) is not lost.
 
@@ -323,10 +324,11 @@ fn main() {
     }
     let _ = std::fs::remove_file(&in_progress);
     println!(
-        "{target}: {cases} cases in {:.0} s ({:.0}/s), {crashed} crashes, slowest case {:.2} s, seed {seed}",
+        "{target}: {cases} cases in {:.0} s ({:.0}/s), {crashed} crashes, slowest case {:.2} s, {} played, seed {seed}",
         start.elapsed().as_secs_f64(),
         cases as f64 / start.elapsed().as_secs_f64(),
-        slowest.as_secs_f64()
+        slowest.as_secs_f64(),
+        touchline_fuzz::PLAYED.load(std::sync::atomic::Ordering::Relaxed)
     );
     std::process::exit(i32::from(crashed > 0));
 }

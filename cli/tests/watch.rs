@@ -111,3 +111,24 @@ fn watch_reloads_once_per_edit_and_reports_a_broken_file_once() {
     assert_eq!(watching.count("tl::S002"), 1, "{}", watching.stderr.lock().unwrap());
     assert_eq!(watching.count(RELOADED), 1);
 }
+
+/// Issue 17, item 2, in `touchline watch`: a script error on a line past column 65,535 is
+/// reported like any other, where miette's renderer used to panic on the label.
+#[test]
+fn a_script_error_far_along_one_line_is_reported_not_a_panic() {
+    const FAILED: &str = "the last good version keeps playing";
+    let dir = folder().join("long-line");
+    std::fs::create_dir_all(&dir).unwrap();
+    let scenario = dir.join("watched.tl");
+    std::fs::write(&scenario, SCENARIO).unwrap();
+    let rhai = dir.join("r.rhai");
+    std::fs::write(&rhai, script("1.0")).unwrap();
+    let watching = Watching::start(&scenario);
+    watching.wait_for("watching", 1);
+    // 70,000 spaces, then a syntax error, all on one line.
+    std::fs::write(&rhai, format!("fn reward(s) {{{} let = ; }}\n", " ".repeat(70_000))).unwrap();
+    watching.wait_for(FAILED, 1);
+    let stderr = watching.stderr.lock().unwrap().clone();
+    assert!(stderr.contains("tl::S002"), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}

@@ -54,9 +54,12 @@ pub(crate) struct WatchArgs {
     warn_script_errors: bool,
 }
 
+/// Renders through [`touchline_dsl::excerpt::Clipped`]: a label past column 65,535 (a script's
+/// diagnostic on a very long line) would make miette's renderer panic (issue 17, item 2).
 fn render(diagnostic: &dyn Diagnostic) -> String {
     let mut out = String::new();
-    if GraphicalReportHandler::new().render_report(&mut out, diagnostic).is_err() {
+    let clipped = touchline_dsl::excerpt::Clipped::new(diagnostic);
+    if GraphicalReportHandler::new().render_report(&mut out, &clipped).is_err() {
         out = diagnostic.to_string();
     }
     out

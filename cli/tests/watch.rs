@@ -117,7 +117,9 @@ fn watch_reloads_once_per_edit_and_reports_a_broken_file_once() {
 #[test]
 fn a_script_error_far_along_one_line_is_reported_not_a_panic() {
     const FAILED: &str = "the last good version keeps playing";
-    let dir = folder().join("long-line");
+    // Its own folder: `folder()` clears the other test's, and `cargo test` runs both in one process.
+    let dir = std::env::temp_dir().join(format!("touchline-cli-watch-long-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let scenario = dir.join("watched.tl");
     std::fs::write(&scenario, SCENARIO).unwrap();

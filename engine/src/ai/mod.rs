@@ -303,7 +303,7 @@ impl TeamAi {
                 ball_carrier::plan(view, g, &analysis, difficulty, rng)
             } else if p.is_keeper() {
                 goalkeeper::plan(view, g, &analysis, difficulty)
-            } else if let Some(plan) = pressing::plan(view, g, &analysis, difficulty, &self.marks, range.start) {
+            } else if let Some(plan) = pressing::plan(view, g, &analysis, difficulty, self.marks[i].is_some()) {
                 Plan { slide: sliding::should_slide(view, g), ..plan }
             } else {
                 let target = team_shape::position(view, g, analysis.frame, difficulty, self.marks[i]);

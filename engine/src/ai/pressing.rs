@@ -70,27 +70,20 @@ pub(crate) fn needs_defending_movement(at: Vec2, target: Vec2, attack_sign: f32)
 }
 
 /// A pressing plan for player `g`, or `None` when he should hold his place in the shape (or his
-/// man, if he marks one). `marks` are the team's man-marking jobs, by index in the team, which
-/// starts at global index `first`.
-pub fn plan(
-    view: &MatchView,
-    g: usize,
-    analysis: &Analysis,
-    difficulty: &Difficulty,
-    marks: &[Option<usize>],
-    first: usize,
-) -> Option<Plan> {
+/// man, if he marks one: `marking`; a marker neither hunts nor covers, as in GRF).
+pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, marking: bool) -> Option<Plan> {
     let p = &view.players[g];
     let ball = view.ball.xy();
     match view.owner {
+        Some(_) if marking => None,
         Some(o) if view.players[o].side != p.side => {
-            if hunts(view, g, o, difficulty, marks, first) {
+            if hunts(view, g, o, difficulty) {
                 let c = &view.players[o];
                 let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
                 let target = go_for_ball(p, c, ball, own_goal);
                 return Some(Plan { run_through: true, ..Plan::go(target, p.max_speed, ball - p.position) });
             }
-            cover(view, g, analysis, difficulty, marks, first)
+            cover(view, g, analysis, difficulty)
         }
         Some(_) => None,
         None => {
@@ -110,22 +103,11 @@ pub fn plan(
 }
 
 /// GRF's hunting of a carrier (`grf-mechanisms.md` §6): of the team's two outfield players
-/// nearest him, one who marks no man and is within his hunting distance goes for the ball, while
+/// nearest him, one within his hunting distance (markers are left out by [`plan`]) goes for the ball, while
 /// he is not yet goal-side of the carrier ([`needs_defending_movement`]). Everyone else holds the
 /// shape or his man, so a carrier is met by the defender in front of him only when he comes on.
-/// `carrier` (global index) may also be the opponent who will get to a loose ball first.
-fn hunts(
-    view: &MatchView,
-    g: usize,
-    carrier: usize,
-    difficulty: &Difficulty,
-    marks: &[Option<usize>],
-    first: usize,
-) -> bool {
+fn hunts(view: &MatchView, g: usize, carrier: usize, difficulty: &Difficulty) -> bool {
     let p = &view.players[g];
-    if marks.get(g - first).copied().flatten().is_some() {
-        return false;
-    }
     let c = &view.players[carrier];
     let aim = c.position + c.velocity * 0.1;
     let d2 = p.position.distance_squared(aim);
@@ -147,17 +129,10 @@ fn hunts(
     needs_defending_movement(p.position, defend_point(p.position, c, own_goal), sign)
 }
 
-/// Cover: the team's second quickest to the ball, with no man to mark, stands between the ball
-/// and goal, six metres off it.
-fn cover(
-    view: &MatchView,
-    g: usize,
-    analysis: &Analysis,
-    difficulty: &Difficulty,
-    marks: &[Option<usize>],
-    first: usize,
-) -> Option<Plan> {
-    if analysis.second != Some(g) || difficulty.theta < 0.3 || marks.get(g - first).copied().flatten().is_some() {
+/// Cover: the team's second quickest to the ball stands between the ball and goal, six metres off
+/// it.
+fn cover(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty) -> Option<Plan> {
+    if analysis.second != Some(g) || difficulty.theta < 0.3 {
         return None;
     }
     let p = &view.players[g];

@@ -11,6 +11,7 @@ use super::MatchView;
 use crate::geometry::pitch::HALF_LENGTH;
 use crate::geometry::{Side, TeamFrame};
 use crate::player::{Player, Role};
+use crate::scenario::MAX_PLAYERS_PER_TEAM;
 
 /// How many opponents a team marks man to man (GRF: three).
 pub const MARKED: usize = 3;
@@ -35,28 +36,47 @@ fn danger(o: &Player, own_goal: Vec2, ball: Vec2, on_ball: bool) -> f32 {
     near * 0.95 + if on_ball { 0.05 } else { 0.0 }
 }
 
-/// How well a player at `at` marks an opponent at `man` (higher is better), for the goal at
-/// `own_goal` (GRF's marking quality): a line through him across his way back to goal (its half
-/// length his distance to goal, kept within 4-14 m); an opponent near that line and near its
-/// middle, still in front of it, is his to mark. The raw distance breaks ties.
-fn marking_quality(at: Vec2, man: Vec2, own_goal: Vec2) -> f32 {
-    let to_goal = own_goal - at;
-    let half = to_goal.length().clamp(4.0, 14.0);
-    let dir = to_goal.normalize_or(Vec2::new(own_goal.x.signum(), 0.0));
-    let across = dir.perp();
-    let centre = at - dir * 0.5;
-    let rel = man - centre;
-    // Signed distance in front of the line (away from goal) and position along it (-1..1).
-    let in_front = -rel.dot(dir);
-    let along = (rel.dot(across) / half).clamp(-1.0, 1.0);
-    let off_line = if in_front >= 0.0 { (in_front - 2.0).abs() } else { -in_front };
-    let mut q = 1.0 - 0.5 * (off_line / 60.0).clamp(0.0, 1.0).sqrt() - 0.5 * along.abs().sqrt();
-    q = q.clamp(0.0, 1.0);
-    if in_front < 0.0 {
-        // He has got past us.
-        q *= 0.6;
+/// A candidate marker's line (GRF's marking quality): a line through him across his way back to
+/// goal (its half length his distance to goal, kept within 4-14 m); an opponent near that line and
+/// near its middle, still in front of it, is his to mark. Its geometry depends on the marker
+/// alone, so [`assign`] builds it once per marker rather than once per marker and man.
+struct MarkingLine {
+    /// The marker's position (m, global).
+    at: Vec2,
+    /// Half the line's length (m).
+    half: f32,
+    /// Unit vector from him towards his goal.
+    dir: Vec2,
+    /// Unit vector along the line.
+    across: Vec2,
+    /// The line's middle, half a metre behind him.
+    centre: Vec2,
+}
+
+impl MarkingLine {
+    /// The line of a player at `at` defending the goal at `own_goal`.
+    fn new(at: Vec2, own_goal: Vec2) -> MarkingLine {
+        let to_goal = own_goal - at;
+        let half = to_goal.length().clamp(4.0, 14.0);
+        let dir = to_goal.normalize_or(Vec2::new(own_goal.x.signum(), 0.0));
+        MarkingLine { at, half, dir, across: dir.perp(), centre: at - dir * 0.5 }
     }
-    q * 0.8 + 0.2 * (1.0 - (at.distance(man) / (4.0 * HALF_LENGTH)).clamp(0.0, 1.0))
+
+    /// How well he marks an opponent at `man` (higher is better). The raw distance breaks ties.
+    fn quality(&self, man: Vec2) -> f32 {
+        let rel = man - self.centre;
+        // Signed distance in front of the line (away from goal) and position along it (-1..1).
+        let in_front = -rel.dot(self.dir);
+        let along = (rel.dot(self.across) / self.half).clamp(-1.0, 1.0);
+        let off_line = if in_front >= 0.0 { (in_front - 2.0).abs() } else { -in_front };
+        let mut q = 1.0 - 0.5 * (off_line / 60.0).clamp(0.0, 1.0).sqrt() - 0.5 * along.abs().sqrt();
+        q = q.clamp(0.0, 1.0);
+        if in_front < 0.0 {
+            // He has got past us.
+            q *= 0.6;
+        }
+        q * 0.8 + 0.2 * (1.0 - (self.at.distance(man) / (4.0 * HALF_LENGTH)).clamp(0.0, 1.0))
+    }
 }
 
 /// Gives each of the three most dangerous opponents of `side` a marker: writes into `marks` (one
@@ -83,18 +103,23 @@ pub fn assign(view: &MatchView, side: Side, marks: &mut [Option<usize>]) {
             top[slot] = (d, g);
         }
     }
+    // The team's candidate markers and their lines, built once for the three men (keepers, lazy
+    // players and agents' players do not mark). A team has at most MAX_PLAYERS_PER_TEAM players.
+    let mut lines: [Option<MarkingLine>; MAX_PLAYERS_PER_TEAM] = Default::default();
+    for (g, line) in mine.zip(&mut lines) {
+        let p = &view.players[g];
+        if p.active && !p.lazy && !p.is_keeper() && !view.agent_driven[g] {
+            *line = Some(MarkingLine::new(p.position, own_goal));
+        }
+    }
     for &(_, man) in top.iter().filter(|(_, g)| *g != usize::MAX) {
         let at = view.players[man].position;
-        let best = mine
-            .clone()
-            .filter(|&g| {
-                let p = &view.players[g];
-                p.active && !p.lazy && !p.is_keeper() && !view.agent_driven[g] && marks[g - mine.start].is_none()
-            })
-            .map(|g| (marking_quality(view.players[g].position, at, own_goal), g))
+        let best = (0..marks.len())
+            .filter(|&i| marks[i].is_none())
+            .filter_map(|i| Some((lines[i].as_ref()?.quality(at), i)))
             .max_by(|a, b| a.0.total_cmp(&b.0));
-        if let Some((_, g)) = best {
-            marks[g - mine.start] = Some(man);
+        if let Some((_, i)) = best {
+            marks[i] = Some(man);
         }
     }
 }
@@ -104,7 +129,14 @@ pub fn assign(view: &MatchView, side: Side, marks: &mut [Option<usize>]) {
 /// team that has been without the ball a while, 0.6): full for the back line and the holding
 /// midfielder, less the further forward he plays.
 fn marking_weight(role: Role) -> f32 {
-    libm::powf((1.3 - mind_set(role)).clamp(0.0, 1.0), 0.7)
+    // libm::powf((1.3 − mind_set(role)).clamp(0.0, 1.0), 0.7) for the five mind-sets, bit for bit
+    // (a test checks): a powf per marker and decision was a measurable share of the AI's time.
+    match role {
+        Role::GK | Role::CB | Role::LB | Role::RB | Role::DM => 1.0,
+        Role::CM | Role::LM | Role::RM => 0.855_387_6,
+        Role::AM => 0.658_042_4,
+        Role::CF => 0.430_511_6,
+    }
 }
 
 /// How attacking a role's mind-set is, 0 (keeper, centre back) to 1 (centre forward): GRF's
@@ -156,9 +188,10 @@ mod tests {
     fn a_marker_facing_his_man_rates_him_above_one_he_has_let_past() {
         let own_goal = Vec2::new(-HALF_LENGTH, 0.0);
         let at = Vec2::new(-30.0, 0.0);
-        let ahead = marking_quality(at, Vec2::new(-24.0, 1.0), own_goal);
-        let past = marking_quality(at, Vec2::new(-36.0, 1.0), own_goal);
-        let wide = marking_quality(at, Vec2::new(-24.0, 20.0), own_goal);
+        let line = MarkingLine::new(at, own_goal);
+        let ahead = line.quality(Vec2::new(-24.0, 1.0));
+        let past = line.quality(Vec2::new(-36.0, 1.0));
+        let wide = line.quality(Vec2::new(-24.0, 20.0));
         assert!(ahead > past, "{ahead} {past}");
         assert!(ahead > wide, "{ahead} {wide}");
     }
@@ -169,5 +202,13 @@ mod tests {
         let near = Player::new(Side::Right, 0, Role::CF, Vec2::new(-35.0, 5.0), Vec2::ZERO);
         let far = Player::new(Side::Right, 1, Role::CF, Vec2::new(0.0, 5.0), Vec2::ZERO);
         assert!(danger(&near, own_goal, near.position, false) > danger(&far, own_goal, near.position, true));
+    }
+
+    #[test]
+    fn the_marking_weights_are_powf_of_the_mind_set() {
+        for role in Role::ALL {
+            let powf = libm::powf((1.3 - mind_set(role)).clamp(0.0, 1.0), 0.7);
+            assert_eq!(marking_weight(role).to_bits(), powf.to_bits(), "{role:?}");
+        }
     }
 }

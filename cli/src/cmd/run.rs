@@ -12,7 +12,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 use serde::Serialize;
-use touchline_engine::{Action, ActionSet, EnvConfig, Scenario};
+use touchline_engine::{Action, ActionSet, EngineError, EnvConfig, Scenario};
 use touchline_render::replay::{Recorder, Replay};
 
 use super::lessons::LessonLog;
@@ -257,6 +257,10 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     let expected_steps = u64::from(first.game_duration) + 1;
     let dir = touchline_dsl::script_dir(&args.scenario);
     let mut env = touchline_dsl::build_env(scenario, &dir, config, args.seed).map_err(|e| match e {
+        // A script failing at the first reset is the script's error, not the configuration's.
+        touchline_dsl::BuildError::Engine(EngineError::Script { message }) => {
+            CliError::Script { episode: 0, steps: 0, message }
+        }
         touchline_dsl::BuildError::Engine(source) => CliError::Config {
             scenario: args.scenario.clone(),
             help: format!(

@@ -1,40 +1,47 @@
 //! The read-only state API scripts see: a `State` value `s` passed to each hook, with getters named
-//! after GRF's raw observation (grf.md §3.1).
-//!
-//! Frame and units, as the observation: the team's own frame, GRF-normalised (x ∈ [-1, 1] from the
-//! team's own goal to the opponents' goal, y ∈ [-0.42, 0.42], the ball's z in metres); `left_team`
-//! is always the script's own team. A reward hook is called once per team that has agents, in that
-//! team's frame; an end hook once per step, in the left team's frame.
-//!
-//! | getter | value |
-//! |---|---|
-//! | `s.ball`, `s.ball_direction`, `s.ball_rotation` | `[x, y, z]` floats (direction: movement per step) |
-//! | `s.ball_owned_team` | -1 nobody, 0 own team, 1 opponents |
-//! | `s.ball_owned_player` | index in the owner's team, or -1 |
-//! | `s.left_team`, `s.right_team` | positions, array of `[x, y]` (own team, opponents) |
-//! | `s.left_team_direction`, `s.right_team_direction` | movement per step, array of `[dx, dy]` |
-//! | `s.left_team_tired_factor`, `s.right_team_tired_factor` | fatigue in [0, 0.99] |
-//! | `s.left_team_yellow_card`, `s.right_team_yellow_card` | booked (bools) |
-//! | `s.left_team_active`, `s.right_team_active` | still on the pitch (false once sent off) |
-//! | `s.left_team_roles`, `s.right_team_roles` | role numbers 0 GK … 9 CF (GRF's order) |
-//! | `s.score` | `[own goals, opponents' goals]` |
-//! | `s.game_mode` | 0 normal, 1 kickoff, 2 goal kick, 3 free kick, 4 corner, 5 throw-in, 6 penalty |
-//! | `s.steps`, `s.steps_left` | steps taken this episode, steps left |
-//! | `s.episode` | 0-based episode index since seeding |
-//! | `s.side` | `"left"` or `"right"`: which team this view belongs to |
-//! | `s.active`, `s.designated` | the first agent's player and the team's designated player (-1 none) |
-//! | `s.controlled` | the players the team's agents drive, one index per agent |
-//! | `s.actions` | the actions those agents just took, GRF names (`"short_pass"`, …); empty at reset |
-//! | `s.sticky_actions` | the first agent's 10 sticky-action flags |
-//! | `s.prev` | the same view one step earlier, or `()` at reset |
-//!
-//! Function: `f32(x)` rounds a float to single precision, as the engine computes.
+//! after GRF's raw observation ([`RawObservation`]). Every property, with its type, unit, frame and
+//! range, is in the scripts reference, `grammar/scripts.md`; [`STATE_PROPERTIES`] lists the names.
 
 use std::sync::Arc;
 
 use rhai::{Array, Dynamic, Engine};
 use serde::{Deserialize, Serialize};
 use touchline_engine::{Action, HookView, RawObservation, Side};
+
+/// The properties of the state `s`, in the order of the reference's table (`grammar/scripts.md`,
+/// which `dsl/tests/script_reference.rs` checks against this list). A script that reads another is
+/// refused when it compiles (`tl::S010`).
+pub const STATE_PROPERTIES: &[&str] = &[
+    "ball",
+    "ball_direction",
+    "ball_rotation",
+    "ball_owned_team",
+    "ball_owned_player",
+    "left_team",
+    "right_team",
+    "left_team_direction",
+    "right_team_direction",
+    "left_team_tired_factor",
+    "right_team_tired_factor",
+    "left_team_yellow_card",
+    "right_team_yellow_card",
+    "left_team_active",
+    "right_team_active",
+    "left_team_roles",
+    "right_team_roles",
+    "score",
+    "game_mode",
+    "steps",
+    "steps_left",
+    "episode",
+    "side",
+    "active",
+    "designated",
+    "controlled",
+    "actions",
+    "sticky_actions",
+    "prev",
+];
 
 /// One team's view of the state after a step (what `s` reads).
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]

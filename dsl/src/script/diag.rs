@@ -1,5 +1,6 @@
-//! [`ScriptError`]: the diagnostics of scenario scripts, codes `tl::S001` … `tl::S006`, `tl::S008`
-//! and `tl::S009` (`tl::S007` is the watcher's; the scenario language's own codes are `tl::E…`).
+//! [`ScriptError`]: the diagnostics of scenario scripts, codes `tl::S001` … `tl::S006` and
+//! `tl::S008` … `tl::S010` (`tl::S007` is the watcher's; the scenario language's own codes are
+//! `tl::E…`).
 
 use miette::{Diagnostic, NamedSource, SourceSpan};
 use thiserror::Error;
@@ -133,6 +134,26 @@ pub enum ScriptError {
         message: String,
     },
 
+    /// `tl::S010`: a hook reads a property the state does not have (`s.ball_owner`). Refused when
+    /// the script compiles; the help names the closest real properties and lists them all.
+    #[error("script `{path}`: the state has no property `{name}`")]
+    #[diagnostic(code(tl::S010))]
+    UnknownProperty {
+        /// The script's path.
+        path: String,
+        /// The property as written.
+        name: String,
+        /// The script text.
+        #[source_code]
+        src: NamedSource<String>,
+        /// The property.
+        #[label("not a property of the state")]
+        span: SourceSpan,
+        /// The closest properties, and all of them.
+        #[help]
+        help: String,
+    },
+
     /// `tl::S006`: a hook returned a value of the wrong type.
     #[error("script `{path}`: `{hook}` returned {got}; it must return {expected}")]
     #[diagnostic(code(tl::S006))]
@@ -151,6 +172,9 @@ pub enum ScriptError {
         /// The hook's definition.
         #[label("this hook")]
         span: SourceSpan,
+        /// How to return the right value.
+        #[help]
+        help: String,
     },
 }
 
@@ -164,12 +188,14 @@ pub(crate) fn offset(text: &str, line: usize, column: usize) -> usize {
     start + line_text.char_indices().nth(column.saturating_sub(1)).map_or(line_text.len(), |(i, _)| i)
 }
 
-/// A one-character span at rhai's position (the whole first line when there is none).
+/// The span at rhai's position: the whole word there (a name, a keyword), else one character (the
+/// whole first line when there is no position).
 pub(crate) fn span_at(text: &str, pos: rhai::Position) -> SourceSpan {
     match (pos.line(), pos.position()) {
         (Some(line), column) => {
             let at = offset(text, line, column.unwrap_or(1));
-            let len = text[at..].chars().next().map_or(0, char::len_utf8);
+            let word = text[at..].bytes().take_while(|b| b.is_ascii_alphanumeric() || *b == b'_').count();
+            let len = if word > 0 { word } else { text[at..].chars().next().map_or(0, char::len_utf8) };
             (at, len).into()
         }
         _ => (0, text.find('\n').unwrap_or(text.len())).into(),
@@ -179,10 +205,36 @@ pub(crate) fn span_at(text: &str, pos: rhai::Position) -> SourceSpan {
 /// The span of `fn name` in `text` (the start when absent).
 pub(crate) fn span_of_fn(text: &str, name: &str) -> SourceSpan {
     let needle = format!("fn {name}");
-    match text.find(&needle) {
+    // The definition, not a mention in a comment: first on its line (after `private`, if any) and
+    // followed by its parameters.
+    let definition = |at: usize| {
+        let before = text[..at].rsplit('\n').next().unwrap_or_default().trim();
+        let after = text[at + needle.len()..].trim_start();
+        (before.is_empty() || before == "private") && after.starts_with('(')
+    };
+    match text.match_indices(&needle).map(|(at, _)| at).find(|&at| definition(at)) {
         Some(at) => (at, needle.len()).into(),
         None => (0, 0).into(),
     }
+}
+
+/// The span of the first loop (`loop`, `while`, `do`, `for`) in `fn name`'s body, if any: where an
+/// exhausted operation budget was most likely spent, for a limit rhai reports without a position
+/// (an empty `loop {}` has none).
+pub(crate) fn span_of_first_loop(ast: &rhai::AST, text: &str, name: &str) -> Option<SourceSpan> {
+    use rhai::{ASTNode, Stmt};
+    let body = super::properties::only_function(ast, name, None);
+    let mut found = None;
+    body.walk(&mut |nodes: &[ASTNode]| {
+        if let Some(ASTNode::Stmt(Stmt::While(_, pos) | Stmt::Do(_, _, pos) | Stmt::For(_, pos))) = nodes.last() {
+            found = Some(*pos);
+            return false;
+        }
+        true
+    });
+    let at = span_at(text, found?).offset();
+    let word = text[at..].bytes().take_while(u8::is_ascii_alphabetic).count();
+    Some((at, word).into())
 }
 
 #[cfg(test)]
@@ -197,5 +249,14 @@ mod tests {
         assert_eq!(offset(text, 2, 4), 7, "after é (2 bytes)");
         assert_eq!(offset(text, 3, 1), 9);
         assert_eq!(offset(text, 9, 1), text.len());
+    }
+
+    #[test]
+    fn the_first_loop_of_a_hook() {
+        let text = "fn helper() { while true {} }\nfn reset(s) {\n  let x = 1;\n  loop {}\n}";
+        let ast = rhai::Engine::new_raw().compile(text).unwrap();
+        let span = span_of_first_loop(&ast, text, "reset").unwrap();
+        assert_eq!(&text[span.offset()..span.offset() + span.len()], "loop");
+        assert!(span_of_first_loop(&ast, text, "reward").is_none());
     }
 }

@@ -139,8 +139,17 @@ impl ScriptHooks {
 
     fn runtime_error(script: &Script, hook: &'static str, step: u32, e: &EvalAltResult) -> ScriptError {
         let (message, help) = failure(e);
-        let pos = e.position();
-        let span = if pos.is_none() { diag::span_of_fn(&script.text, hook) } else { diag::span_at(&script.text, pos) };
+        // The innermost position: where in a helper the failure happened, not the call to it.
+        let pos = if e.unwrap_inner().position().is_none() { e.position() } else { e.unwrap_inner().position() };
+        let limit =
+            matches!(e.unwrap_inner(), EvalAltResult::ErrorTooManyOperations(_) | EvalAltResult::ErrorTerminated(..));
+        let span = if !pos.is_none() {
+            diag::span_at(&script.text, pos)
+        } else if let Some(span) = limit.then(|| diag::span_of_first_loop(&script.ast, &script.text, hook)).flatten() {
+            span
+        } else {
+            diag::span_of_fn(&script.text, hook)
+        };
         ScriptError::Runtime { path: script.path.clone(), hook, step, message, src: script.source(), span, help }
     }
 
@@ -152,6 +161,10 @@ impl ScriptHooks {
             expected: expected.to_owned(),
             src: script.source(),
             span: diag::span_of_fn(&script.text, hook),
+            help: format!(
+                "the value of a function is its last expression, or what `return` gives: every branch of \
+                 `fn {hook}` must end in such a value (an `if` without `else` gives `()`)"
+            ),
         }
     }
 
@@ -259,7 +272,18 @@ pub(crate) fn failure(e: &EvalAltResult) -> (String, Option<String>) {
             "`memory` is not visible in helper functions".to_owned(),
             Some("pass `memory` to the helper as an argument, or call it as `helper!(…)`".to_owned()),
         ),
-        _ => (e.to_string(), None),
+        EvalAltResult::ErrorDotExpr(message, _) => match super::properties::unknown_at_run_time(message) {
+            Some((message, help)) => (message, Some(help)),
+            None => (e.to_string(), None),
+        },
+        _ => (
+            e.to_string(),
+            Some(
+                "a hook that fails ends the step with this error (ErrorPolicy::Raise, the default); with \
+                 ErrorPolicy::Warn the term pays 0 and the error is logged"
+                    .to_owned(),
+            ),
+        ),
     }
 }
 

@@ -44,40 +44,17 @@
 //! ([`Env::hook_log`](touchline_engine::Env::hook_log)). The limits, their values and the
 //! measured worst cases are tabled in `grammar/scripts.md`.
 //!
-//! Errors are [`ScriptError`] diagnostics `tl::S001` … `tl::S009` (`tl::S007` is the watcher's). When a hook fails during a
+//! Errors are [`ScriptError`] diagnostics `tl::S001` … `tl::S010` (`tl::S007` is the watcher's). When a hook fails during a
 //! step, [`ErrorPolicy`] decides: fail the step (the default), or pay zero for that term, log
 //! the error and count it in `StepInfo::script_errors`.
 //!
 //! ## State API (`s`)
 //!
-//! Getters named after GRF's raw observation (grf.md §3.1).
-//!
-//! Frame and units, as the observation: the team's own frame, GRF-normalised (x ∈ [-1, 1] from the
-//! team's own goal to the opponents' goal, y ∈ [-0.42, 0.42], the ball's z in metres); `left_team`
-//! is always the script's own team. A reward hook is called once per team that has agents, in that
-//! team's frame; an end hook once per step, in the left team's frame.
-//!
-//! | getter | value |
-//! |---|---|
-//! | `s.ball`, `s.ball_direction`, `s.ball_rotation` | `[x, y, z]` floats (direction: movement per step) |
-//! | `s.ball_owned_team` | -1 nobody, 0 own team, 1 opponents |
-//! | `s.ball_owned_player` | index in the owner's team, or -1 |
-//! | `s.left_team`, `s.right_team` | positions, array of `[x, y]` (own team, opponents) |
-//! | `s.left_team_direction`, `s.right_team_direction` | movement per step, array of `[dx, dy]` |
-//! | `s.left_team_tired_factor`, `s.right_team_tired_factor` | fatigue in [0, 0.99] |
-//! | `s.left_team_yellow_card`, `s.right_team_yellow_card` | booked (bools) |
-//! | `s.left_team_active`, `s.right_team_active` | still on the pitch (false once sent off) |
-//! | `s.left_team_roles`, `s.right_team_roles` | role numbers 0 GK … 9 CF (GRF's order) |
-//! | `s.score` | `[own goals, opponents' goals]` |
-//! | `s.game_mode` | 0 normal, 1 kickoff, 2 goal kick, 3 free kick, 4 corner, 5 throw-in, 6 penalty |
-//! | `s.steps`, `s.steps_left` | steps taken this episode, steps left |
-//! | `s.episode` | 0-based episode index since seeding |
-//! | `s.side` | `"left"` or `"right"`: which team this view belongs to |
-//! | `s.active`, `s.designated` | the first agent's player and the team's designated player (-1 none) |
-//! | `s.controlled` | the players the team's agents drive, one index per agent |
-//! | `s.actions` | the actions those agents just took, GRF names (`"short_pass"`, …); empty at reset |
-//! | `s.sticky_actions` | the first agent's 10 sticky-action flags |
-//! | `s.prev` | the same view one step earlier, or `()` at reset |
+//! Every property of `s` ([`STATE_PROPERTIES`]), with its type, unit, frame and range, a worked
+//! example per hook and the codes are in the scripts reference, `grammar/scripts.md`, whose
+//! examples `dsl/tests/script_reference.rs` compiles and plays. Frame: the team's own (its goal at
+//! x = -1), GRF-normalised like the observation. A property the state does not have is refused when
+//! the script compiles (`tl::S010`, with the closest real names).
 //!
 //! Function: `f32(x)` rounds a float to single precision, as the engine computes.
 
@@ -88,6 +65,7 @@ mod engine;
 mod file;
 mod hooks;
 mod memory;
+mod properties;
 mod refused;
 
 use std::path::{Path, PathBuf};
@@ -99,6 +77,7 @@ use thiserror::Error;
 use touchline_engine::Scenario;
 use touchline_engine::scenario::{EndCondition, RewardKind};
 
+pub use api::STATE_PROPERTIES;
 pub use diag::ScriptError;
 pub use engine::Limits;
 pub use file::MAX_SCRIPT_BYTES;
@@ -317,6 +296,16 @@ fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -
             help: refusal.why.to_owned(),
         }));
     }
+    if let Some(unknown) = properties::first_unknown(&first) {
+        let at = diag::span_at(&text, unknown.position).offset();
+        return Err(Box::new(ScriptError::UnknownProperty {
+            path: path.to_owned(),
+            help: properties::help(&unknown.name),
+            span: (at, unknown.name.len()).into(),
+            name: unknown.name,
+            src: src(),
+        }));
+    }
     let mut top = Scope::new();
     top.push("memory", Map::new());
     meter.start();
@@ -334,7 +323,13 @@ fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -
             continue;
         }
         if !constant {
-            let at = text.find(&format!("let {name}")).unwrap_or(0);
+            // The declaration, not a mention in a comment: `let` first on its line.
+            let declaration = format!("let {name}");
+            let at = text
+                .match_indices(&declaration)
+                .map(|(at, _)| at)
+                .find(|&at| text[..at].rsplit('\n').next().is_some_and(|before| before.trim().is_empty()))
+                .unwrap_or(0);
             return Err(Box::new(ScriptError::TopLevel {
                 path: path.to_owned(),
                 message: format!("`let {name}` at the top level would keep state across episodes"),

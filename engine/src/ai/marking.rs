@@ -10,8 +10,7 @@ use glam::Vec2;
 use super::MatchView;
 use crate::geometry::pitch::HALF_LENGTH;
 use crate::geometry::{Side, TeamFrame};
-use crate::player::{Player, Role};
-use crate::scenario::MAX_PLAYERS_PER_TEAM;
+use crate::player::{MAX_PLAYERS_PER_TEAM, Player, Role};
 
 /// How many opponents a team marks man to man (GRF: three).
 pub const MARKED: usize = 3;

@@ -1,11 +1,11 @@
 //! Player kinematics: bounded acceleration and turning towards the desired velocity, and
 //! position-based separation of bodies that overlap.
 
-use glam::Vec2;
+use glam::{Vec2, Vec4};
 
 use crate::game::PlayerInput;
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH, RIM_HALF_LENGTH, RIM_HALF_WIDTH};
-use crate::player::Player;
+use crate::player::{MAX_PLAYERS_PER_TEAM, Player};
 
 /// Radius of a player's body for collisions (m).
 pub(crate) const BODY_RADIUS: f32 = 0.35;
@@ -102,56 +102,120 @@ const MAX_CONTACT_STEP: f32 = 0.08;
 /// relative velocity; then keeps everyone inside the rim. Equal shares, except that the player on
 /// the ball (`owner`, an index into `players`) gives way less and draws the other round to his
 /// side (GRF's body contact): nobody is locked head-on, and two bodies never drift along together.
+///
+/// Pairs are resolved in order, (0, 1), (0, 2), … (1, 2), …, each seeing the positions the pairs
+/// before it left. Most ticks bring no contact at all, so a compact copy of the positions is
+/// scanned first and only the rows (player `i` against everyone after him) that hold a contact
+/// are resolved: the same pairs in the same order, so the same result bit for bit, without
+/// walking every pair of `Player`s every tick.
 pub(crate) fn separate_players(players: &mut [Player], owner: Option<usize>) {
-    const MIN_DIST: f32 = 2.0 * BODY_RADIUS;
     let n = players.len();
-    for i in 0..n {
-        if !players[i].active {
-            continue;
+    if n > MAX_PLAYERS {
+        // More than a match holds (scenarios allow 11 a side): no compact copy, every row.
+        for i in 0..n {
+            resolve_contacts(players, i, owner);
         }
-        for j in (i + 1)..n {
-            if !players[j].active {
-                continue;
-            }
-            let d = players[j].position - players[i].position;
-            let d2 = d.length_squared();
-            if d2 >= MIN_DIST * MIN_DIST {
-                continue;
-            }
-            let dist = d2.sqrt();
-            // Two bodies on the same spot part across the pitch, the lower index to -y, so that
-            // neither pushes the other along the length of the pitch.
-            let normal = if dist > 1e-5 { d / dist } else { Vec2::new(0.0, 1.0) };
-            let overlap = MIN_DIST - dist;
-            let share_i = match owner {
-                Some(o) if o == i => CARRIER_SHARE,
-                Some(o) if o == j => 1.0 - CARRIER_SHARE,
-                _ => 0.5,
-            };
-            players[i].position -= normal * (overlap * share_i).min(MAX_CONTACT_STEP);
-            players[j].position += normal * (overlap * (1.0 - share_i)).min(MAX_CONTACT_STEP);
-            let closing = (players[j].velocity - players[i].velocity).dot(normal);
-            if closing < 0.0 {
-                let impulse = normal * (closing * 0.5);
-                players[i].velocity += impulse;
-                players[j].velocity -= impulse;
-            }
-            match owner {
-                Some(o) if o == i => pull_round(players, i, j),
-                Some(o) if o == j => pull_round(players, j, i),
-                // Neither has the ball: each steps aside round the other (GRF's players share
-                // each other's movement in a contact), so two bodies pushing head-on slide past
-                // each other instead of drifting along locked together.
-                _ => {
-                    let side = normal.perp() * SIDESTEP;
-                    players[i].position -= side;
-                    players[j].position += side;
-                }
+    } else {
+        let mut bodies = Bodies::of(players);
+        for i in 0..n {
+            if players[i].active && bodies.may_touch_later(i) {
+                resolve_contacts(players, i, owner);
+                bodies = Bodies::of(players);
             }
         }
     }
     for p in players.iter_mut() {
         keep_inside_rim(p);
+    }
+}
+
+/// Bodies overlap nearer than this (m): two radii.
+const MIN_DIST: f32 = 2.0 * BODY_RADIUS;
+/// Most players in a match.
+const MAX_PLAYERS: usize = 2 * MAX_PLAYERS_PER_TEAM;
+/// [`MAX_PLAYERS`] rounded up to whole groups of four, the width of the scan's SIMD operations.
+const SLOTS: usize = MAX_PLAYERS.next_multiple_of(4);
+
+/// The players' positions, x and y apart, for the contact scan of [`separate_players`]. An
+/// inactive player (and each slot past the last player) stands at infinity, where nobody touches
+/// him.
+struct Bodies {
+    x: [f32; SLOTS],
+    y: [f32; SLOTS],
+}
+
+impl Bodies {
+    /// The positions of `players` (at most [`MAX_PLAYERS`]).
+    fn of(players: &[Player]) -> Bodies {
+        let mut bodies = Bodies { x: [f32::INFINITY; SLOTS], y: [f32::INFINITY; SLOTS] };
+        for (k, p) in players.iter().enumerate().filter(|(_, p)| p.active) {
+            bodies.x[k] = p.position.x;
+            bodies.y[k] = p.position.y;
+        }
+        bodies
+    }
+
+    /// Whether player `i` may touch any of the players after him: the squared distance computed
+    /// as [`resolve_contacts`] computes it, four players at a time (glam's `Vec4` is SIMD), and
+    /// true also for anything it cannot rule out (a non-finite position), so a row it passes over
+    /// holds no contact.
+    fn may_touch_later(&self, i: usize) -> bool {
+        let (xi, yi) = (Vec4::splat(self.x[i]), Vec4::splat(self.y[i]));
+        let apart = Vec4::splat(MIN_DIST * MIN_DIST);
+        let mut near = 0u32;
+        for c in (i + 1) / 4..SLOTS / 4 {
+            let dx = Vec4::from_slice(&self.x[4 * c..]) - xi;
+            let dy = Vec4::from_slice(&self.y[4 * c..]) - yi;
+            near |= (!(dx * dx + dy * dy).cmpge(apart).bitmask() & 0b1111) << (4 * c);
+        }
+        near >> (i + 1) != 0
+    }
+}
+
+/// Resolves the contacts of player `i` with each player after him, in order.
+fn resolve_contacts(players: &mut [Player], i: usize, owner: Option<usize>) {
+    if !players[i].active {
+        return;
+    }
+    for j in (i + 1)..players.len() {
+        if !players[j].active {
+            continue;
+        }
+        let d = players[j].position - players[i].position;
+        let d2 = d.length_squared();
+        if d2 >= MIN_DIST * MIN_DIST {
+            continue;
+        }
+        let dist = d2.sqrt();
+        // Two bodies on the same spot part across the pitch, the lower index to -y, so that
+        // neither pushes the other along the length of the pitch.
+        let normal = if dist > 1e-5 { d / dist } else { Vec2::new(0.0, 1.0) };
+        let overlap = MIN_DIST - dist;
+        let share_i = match owner {
+            Some(o) if o == i => CARRIER_SHARE,
+            Some(o) if o == j => 1.0 - CARRIER_SHARE,
+            _ => 0.5,
+        };
+        players[i].position -= normal * (overlap * share_i).min(MAX_CONTACT_STEP);
+        players[j].position += normal * (overlap * (1.0 - share_i)).min(MAX_CONTACT_STEP);
+        let closing = (players[j].velocity - players[i].velocity).dot(normal);
+        if closing < 0.0 {
+            let impulse = normal * (closing * 0.5);
+            players[i].velocity += impulse;
+            players[j].velocity -= impulse;
+        }
+        match owner {
+            Some(o) if o == i => pull_round(players, i, j),
+            Some(o) if o == j => pull_round(players, j, i),
+            // Neither has the ball: each steps aside round the other (GRF's players share
+            // each other's movement in a contact), so two bodies pushing head-on slide past
+            // each other instead of drifting along locked together.
+            _ => {
+                let side = normal.perp() * SIDESTEP;
+                players[i].position -= side;
+                players[j].position += side;
+            }
+        }
     }
 }
 
@@ -169,4 +233,50 @@ fn pull_round(players: &mut [Player], carrier: usize, other: usize) {
     let o = &mut players[other];
     let step = (spot - o.position) * PULL_RATE;
     o.position += step.clamp_length_max(MAX_CONTACT_STEP);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::Side;
+    use crate::player::Role;
+
+    /// 22 players crowded into a 6 m × 4 m box (plenty of contacts), a few inactive.
+    fn crowd(seed: u32) -> Vec<Player> {
+        let mut state = seed.wrapping_mul(2_654_435_761).wrapping_add(1);
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            (state % 10_000) as f32 / 10_000.0
+        };
+        (0..MAX_PLAYERS)
+            .map(|g| {
+                let side = if g < MAX_PLAYERS_PER_TEAM { Side::Left } else { Side::Right };
+                let mut p = Player::new(side, g % MAX_PLAYERS_PER_TEAM, Role::CM, Vec2::ZERO, Vec2::ZERO);
+                p.position = Vec2::new(6.0 * next() - 3.0, 4.0 * next() - 2.0);
+                p.velocity = Vec2::new(4.0 * next() - 2.0, 4.0 * next() - 2.0);
+                p.active = next() > 0.1;
+                p
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_contact_scan_resolves_exactly_as_every_row_would() {
+        for seed in 0..300 {
+            let owner = (seed % 3 != 0).then_some(seed as usize % MAX_PLAYERS);
+            let mut scanned = crowd(seed);
+            let mut every_row = scanned.clone();
+            separate_players(&mut scanned, owner);
+            for i in 0..every_row.len() {
+                resolve_contacts(&mut every_row, i, owner);
+            }
+            every_row.iter_mut().for_each(keep_inside_rim);
+            for (a, b) in scanned.iter().zip(&every_row) {
+                assert_eq!(a.position.to_array().map(f32::to_bits), b.position.to_array().map(f32::to_bits));
+                assert_eq!(a.velocity.to_array().map(f32::to_bits), b.velocity.to_array().map(f32::to_bits));
+            }
+        }
+    }
 }

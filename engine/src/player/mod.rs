@@ -9,3 +9,6 @@ mod role;
 pub use attributes::Attributes;
 pub use player::{DRIBBLE_SPEED, Player, SPRINT_SPEED, WALK_SPEED, nearest_distance, top_speed};
 pub use role::Role;
+
+/// Most players a team may field (Law 3).
+pub const MAX_PLAYERS_PER_TEAM: usize = 11;

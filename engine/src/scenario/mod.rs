@@ -25,15 +25,14 @@ pub use placement::{Body, MAX_PLACEMENT_TRIES, Placement, Require};
 pub use random::{Distribution, PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Region, Sample, Spot};
 pub use terms::{EndCondition, RewardKind, RewardTerm};
 
+pub use crate::player::MAX_PLAYERS_PER_TEAM;
+
 use crate::error::EngineError;
 use crate::player::Role;
 
 /// Version of the compiled-scenario format this engine writes and reads. A scenario with a newer
 /// version is refused (its fields may mean something this engine does not know).
 pub const SCENARIO_FORMAT_VERSION: u32 = 1;
-
-/// Most players a team may field (Law 3).
-pub const MAX_PLAYERS_PER_TEAM: usize = 11;
 
 /// A playable situation: configuration keys, ball start and both teams' players.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

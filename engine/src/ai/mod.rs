@@ -206,14 +206,16 @@ impl TeamAi {
             // Arrive: slow down within the last metres so players settle on their spots.
             let speed = if plan.run_through { plan.speed } else { plan.speed.min(dist * 2.5) };
             let velocity = if dist > 0.15 { to * (speed / dist) } else { Vec2::ZERO };
-            inputs[i] = PlayerInput {
-                velocity,
-                look: plan.look,
-                dribble: plan.dribble,
-                kick: plan.kick.take(),
-                slide: std::mem::take(&mut plan.slide),
-                first_time: plan.first_time,
-            };
+            // Every field of the input, written in place: built as a whole `PlayerInput` and
+            // copied, it went through the stack in pieces that a wide load then read back, a
+            // store-forwarding stall that cost more than the rest of this loop.
+            let input = &mut inputs[i];
+            input.velocity = velocity;
+            input.look = plan.look;
+            input.dribble = plan.dribble;
+            input.kick = plan.kick.take();
+            input.slide = std::mem::take(&mut plan.slide);
+            input.first_time = plan.first_time;
         }
     }
 

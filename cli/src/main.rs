@@ -188,15 +188,14 @@ pub(crate) enum CliError {
     #[diagnostic(transparent)]
     Build(touchline_dsl::BuildError),
 
-    /// A scenario script failed while playing (its rendered diagnostic, `tl::S005`/`tl::S006`).
-    #[error("a scenario script failed in episode {episode} at step {steps}:\n{message}")]
+    /// A scenario script failed while playing (its rendered diagnostic, `tl::S005`/`tl::S006`, is
+    /// printed as it is, above this one: nesting it in miette's frame wrapped its lines twice).
+    #[error("the run stopped in episode {episode}: a scenario script failed (above)")]
     #[diagnostic(code(tl::cli::script))]
     Script {
         /// 0-based episode index.
         episode: u64,
-        /// Steps played in that episode before the failure.
-        steps: u32,
-        /// The script's diagnostic.
+        /// The script's diagnostic, rendered; it names the step.
         message: String,
     },
 
@@ -237,7 +236,7 @@ impl CliError {
     /// The error of a failed step: a script's diagnostic, or an engine bug.
     pub(crate) fn step(info: &touchline_engine::StepInfo, source: EngineError) -> CliError {
         match source {
-            EngineError::Script { message } => CliError::Script { episode: info.episode, steps: info.steps, message },
+            EngineError::Script { message } => CliError::Script { episode: info.episode, message },
             source => CliError::Engine { episode: info.episode, steps: info.steps, source },
         }
     }
@@ -276,8 +275,54 @@ fn main() -> ExitCode {
         Err(CliError::Output(e)) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(err) => {
             let code = err.exit_code();
-            eprintln!("{:?}", miette::Report::new(err));
+            report(err);
             ExitCode::from(code)
         }
+    }
+}
+
+/// A one-line summary after a list of diagnostics.
+#[derive(Debug, Error, Diagnostic)]
+#[error("{0}")]
+#[diagnostic(code(tl::cli::summary))]
+struct Summary(String);
+
+/// Prints `err` to stderr. A list of diagnostics (a scenario that does not compile, scripts that do
+/// not load) is printed one diagnostic at a time and then, if there are several, counted: as one
+/// miette report, the first was printed twice (as the report's own message and again as the
+/// first related diagnostic).
+fn report(err: CliError) {
+    match err {
+        CliError::Load(LoadError::Compile(diags)) => {
+            let errors = diags.errors().count();
+            for d in &diags.items {
+                eprintln!("{:?}", miette::Report::new(d.clone()));
+            }
+            let origin = diags.items.first().map(|d| d.source.name().to_owned()).unwrap_or_default();
+            let (n, warnings) = (errors, diags.items.len() - errors);
+            let plural = |k: usize, word: &str| format!("{k} {word}{}", if k == 1 { "" } else { "s" });
+            let line = format!("`{origin}` does not compile: {}, {}", plural(n, "error"), plural(warnings, "warning"));
+            if diags.items.len() > 1 {
+                eprintln!("{:?}", miette::Report::new(Summary(line)));
+            }
+        }
+        CliError::Build(touchline_dsl::BuildError::Scripts(errors)) => {
+            let n = errors.errors.len();
+            for e in errors.errors {
+                eprintln!("{:?}", miette::Report::new(e));
+            }
+            if n > 1 {
+                eprintln!(
+                    "{:?}",
+                    miette::Report::new(Summary(format!("the scenario's scripts do not load: {n} errors")))
+                );
+            }
+        }
+        CliError::Script { ref message, .. } => {
+            eprintln!("{}", message.trim_end());
+            eprintln!();
+            eprintln!("{:?}", miette::Report::new(err));
+        }
+        err => eprintln!("{:?}", miette::Report::new(err)),
     }
 }

@@ -58,3 +58,53 @@ fn an_endless_reset_is_the_scripts_error_not_the_configurations() {
     assert!(!err.contains("tl::cli::config") && !err.contains("--left-agents"), "{err}");
     snapshot("an_endless_reset_is_the_scripts_error_not_the_configurations", &err);
 }
+
+/// Issue 18, item 5: a script failing in a step is printed as the script's own diagnostic, not
+/// nested in a frame that wrapped each of its lines twice, and the step it names is the one the
+/// env counts (it said "at step 0" around "failed at step 1").
+#[test]
+fn a_script_failing_in_a_step_is_printed_whole_and_names_its_step() {
+    let dir = drill("throws", "fn reward(s) {\n    if s.steps == 3 { throw \"no\"; }\n    0.0\n}\n");
+    let out = touchline(&dir, &["run", "drill.tl"]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    assert!(err.contains("`reward` failed in step 3") && err.contains("in episode 0"), "{err}");
+    assert!(!err.contains("at step"), "{err}");
+    assert!(err.lines().all(|l| l.chars().count() <= 80), "no line wider than the renderer's 80 columns:\n{err}");
+    snapshot("a_script_failing_in_a_step_is_printed_whole_and_names_its_step", &err);
+}
+
+/// Issue 18, item 5: `run` printed the first compile error twice (as the report's message and as
+/// its first related diagnostic).
+#[test]
+fn run_prints_each_compile_error_once() {
+    let dir = drill("broken", "fn reward(s) { 0.0 }\n");
+    let broken = "scenario d {\n  extends academy\n  game_durration 400\n  team left { GK at (-1, 0) CBB at (0.5, 0) }\n  team right { GK at (-1, 0) }\n}\n";
+    std::fs::write(dir.join("drill.tl"), broken).unwrap();
+    let out = touchline(&dir, &["run", "drill.tl"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    assert_eq!(err.matches("unknown key `game_durration`").count(), 1, "{err}");
+    assert_eq!(err.matches("unknown role `CBB`").count(), 1, "{err}");
+    assert!(err.contains("`drill.tl` does not compile: 2 errors, 0 warnings"), "{err}");
+    snapshot("run_prints_each_compile_error_once", &err);
+    // And a script that does not compile, once.
+    let dir = drill("broken-script", "fn reward(s) { let x = ; }\n");
+    let err = text(&touchline(&dir, &["run", "drill.tl"]).stderr);
+    assert_eq!(err.matches("Unexpected ';'").count(), 1, "{err}");
+}
+
+/// Issue 18, item 5: a main file that is not text is `tl::E150`; it was `tl::E112`, the code of an
+/// import that cannot be read.
+#[test]
+fn a_binary_scenario_file_is_e150() {
+    let dir = drill("binary", "fn reward(s) { 0.0 }\n");
+    std::fs::write(dir.join("drill.tl"), [0x82_u8, 0xff, 0x00, 0x13, 0x9f]).unwrap();
+    let check = touchline(&dir, &["check", "drill.tl"]);
+    let run = touchline(&dir, &["run", "drill.tl"]);
+    assert_eq!((check.status.code(), run.status.code()), (Some(1), Some(2)));
+    for err in [text(&check.stderr), text(&run.stderr)] {
+        assert!(err.contains("tl::E150") && err.contains("not UTF-8 text: byte 0 is 0x82"), "{err}");
+        assert!(!err.contains("tl::E112"), "{err}");
+    }
+}

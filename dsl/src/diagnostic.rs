@@ -6,6 +6,7 @@ use std::sync::Arc;
 
 use miette::{LabeledSpan, NamedSource, Severity, SourceSpan};
 
+use crate::excerpt::clip_message;
 use crate::syntax::Span;
 
 /// The stable code of a compiler diagnostic (`tl::E1xx` errors, `tl::W1xx` warnings). Codes are
@@ -39,6 +40,9 @@ pub enum Code {
     ExtendsCycle,
     /// An imported file cannot be read.
     MissingImport,
+    /// The scenario file itself cannot be read: missing, not a regular file, over 64 MiB, or not
+    /// UTF-8 text.
+    UnreadableSource,
     /// A `require` constraint that can never hold, or too rarely for the retry budget.
     Unsatisfiable,
     /// `extends` names no known preset or scenario.
@@ -130,7 +134,7 @@ pub enum Code {
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 50] = [
+    pub const ALL: [Code; 51] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -176,6 +180,7 @@ impl Code {
         Code::LessonMismatch,
         Code::TooDeep,
         Code::RewardTooLarge,
+        Code::UnreadableSource,
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
@@ -231,6 +236,7 @@ impl Code {
             Code::LessonMismatch => "tl::E147",
             Code::TooDeep => "tl::E148",
             Code::RewardTooLarge => "tl::E149",
+            Code::UnreadableSource => "tl::E150",
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",
@@ -274,27 +280,33 @@ impl Diagnostic {
     pub fn new(code: Code, message: impl Into<String>, source: &Source, span: Span, label: impl Into<String>) -> Self {
         Diagnostic {
             code,
-            message: message.into(),
+            message: clip_message(message.into()),
             source: source.clone(),
-            labels: vec![(span, label.into())],
+            labels: vec![(span, clip_message(label.into()))],
             help: None,
         }
     }
 
     /// A diagnostic about a whole source, without a span (an unreadable file, an empty one).
     pub fn bare(code: Code, message: impl Into<String>, source: &Source) -> Self {
-        Diagnostic { code, message: message.into(), source: source.clone(), labels: Vec::new(), help: None }
+        Diagnostic {
+            code,
+            message: clip_message(message.into()),
+            source: source.clone(),
+            labels: Vec::new(),
+            help: None,
+        }
     }
 
     /// Adds help text.
     pub fn with_help(mut self, help: impl Into<String>) -> Self {
-        self.help = Some(help.into());
+        self.help = Some(clip_message(help.into()));
         self
     }
 
     /// Adds a secondary label.
     pub fn with_label(mut self, span: Span, label: impl Into<String>) -> Self {
-        self.labels.push((span, label.into()));
+        self.labels.push((span, clip_message(label.into())));
         self
     }
 

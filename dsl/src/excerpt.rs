@@ -8,6 +8,10 @@
 //! at most [`MAX_LABEL`] bytes on its first line. Lines up to [`LONG_LINE`] bytes render as
 //! before.
 //!
+//! Messages, labels and help echo the user's text (`found the name `…``): [`clip_message`] cuts a
+//! quoted piece longer than [`MAX_QUOTED`] bytes in the middle, and a whole message at
+//! [`MAX_MESSAGE`] bytes, so that a 400 KB token does not become a 400 KB message.
+//!
 //! [`Clipped`] wraps any diagnostic for rendering; the compiler's
 //! [`Diagnostic`](crate::Diagnostic) and [`JsonError`](crate::JsonError) clip by themselves (they
 //! also reach renderers as related diagnostics, which a wrapper cannot reach).
@@ -27,6 +31,43 @@ const MARGIN: usize = 60;
 /// The most bytes of a long line an excerpt shows: a whole label and its margins (so an excerpt
 /// is never itself a long line).
 pub const WINDOW: usize = MAX_LABEL + 2 * MARGIN;
+
+/// The most bytes of a `quoted` piece of the user's text kept in a message.
+pub const MAX_QUOTED: usize = 80;
+/// The most bytes of a message, label or help.
+pub const MAX_MESSAGE: usize = 2_000;
+
+/// `text` with each `` `quoted` `` piece over [`MAX_QUOTED`] bytes cut in the middle (its length
+/// given), and the whole cut in the middle at [`MAX_MESSAGE`] bytes; shorter text is unchanged.
+pub fn clip_message(text: String) -> String {
+    if text.len() <= MAX_QUOTED {
+        return text;
+    }
+    let mut out = String::with_capacity(text.len().min(MAX_MESSAGE));
+    for (i, piece) in text.split('`').enumerate() {
+        if i > 0 {
+            out.push('`');
+        }
+        // Odd pieces are inside backquotes.
+        if i % 2 == 1 && piece.len() > MAX_QUOTED {
+            out.push_str(&middle_cut(piece, MAX_QUOTED, &format!("… {} bytes …", piece.len())));
+        } else {
+            out.push_str(piece);
+        }
+    }
+    if out.len() > MAX_MESSAGE {
+        out = middle_cut(&out, MAX_MESSAGE, &format!("… ({} bytes cut) …", out.len() - MAX_MESSAGE));
+    }
+    out
+}
+
+/// `text` cut to about `max` bytes: its start and end around `marker`, on char boundaries.
+fn middle_cut(text: &str, max: usize, marker: &str) -> String {
+    let data = text.as_bytes();
+    let head = floor_boundary(data, max * 2 / 3);
+    let tail = ceil_boundary(data, text.len() - max / 3);
+    format!("{}{marker}{}", &text[..head], &text[tail..])
+}
 
 /// Whether `data` holds a line longer than [`LONG_LINE`].
 fn has_long_line(data: &[u8]) -> bool {

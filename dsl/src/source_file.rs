@@ -38,8 +38,13 @@ pub(crate) fn read_regular(path: &Path, max: u64) -> io::Result<Vec<u8>> {
 /// # Errors
 /// As [`read_regular`], and `InvalidData` for text that is not UTF-8.
 pub(crate) fn read_text(path: &Path) -> io::Result<String> {
-    String::from_utf8(read_regular(path, MAX_SOURCE_BYTES)?)
-        .map_err(|_| io::Error::new(io::ErrorKind::InvalidData, "stream did not contain valid UTF-8"))
+    String::from_utf8(read_regular(path, MAX_SOURCE_BYTES)?).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        io::Error::new(
+            io::ErrorKind::InvalidData,
+            format!("it is not UTF-8 text: byte {at} is 0x{:02x} (a binary file?)", e.as_bytes()[at]),
+        )
+    })
 }
 
 #[cfg(test)]

@@ -184,3 +184,18 @@ fn a_one_line_json_over_64_kib_renders() {
     let rendered = render_plain(&load_json(&json, "long.json").unwrap_err());
     assert!(rendered.contains("tl::E003") && rendered.len() < 4_000, "{rendered}");
 }
+
+/// Issue 18, item 5: a 400,000-byte token quoted in a message (`found the name `xxx…``) is cut
+/// in the middle: the whole message was 439 KB.
+#[test]
+fn a_huge_token_is_not_echoed_whole() {
+    for text in [
+        format!("scenario s {{\n  extends academy\n  game_duration {}\n}}", "x".repeat(400_000)),
+        format!("scenario s {{\n  extends academy\n  ball at (0, 0) {}\n}}", "x.".repeat(200_000)),
+        format!("scenario s {{\n  extends academy\n  ball at (0, 0){}\n}}", "}".repeat(400_000)),
+    ] {
+        let rendered = compile(&text, "long.tl").unwrap_err().render_plain();
+        assert!(rendered.contains("tl::E1"), "{rendered}");
+        assert!(rendered.len() < 4_000, "{} bytes", rendered.len());
+    }
+}

@@ -151,9 +151,9 @@ fn two_goalkeepers_is_e004() {
 }
 
 #[test]
-fn missing_tl_source_is_e112() {
+fn missing_tl_source_is_e150() {
     let err = load("drills/my_drill.tl").unwrap_err();
-    assert_eq!(code(&err), "tl::E112");
+    assert_eq!(code(&err), "tl::E150");
     insta::assert_snapshot!(render_plain(&err));
 }
 
@@ -174,7 +174,7 @@ fn codes_are_stable() {
         load("x.tl").unwrap_err(),
     ];
     let codes: Vec<String> = errors.iter().map(code).collect();
-    assert_eq!(codes, ["tl::E001", "tl::E002", "tl::E003", "tl::E004", "tl::E112"]);
+    assert_eq!(codes, ["tl::E001", "tl::E002", "tl::E003", "tl::E004", "tl::E150"]);
     for err in &errors {
         assert_eq!(err.code_str(), code(err));
     }

@@ -258,9 +258,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     let dir = touchline_dsl::script_dir(&args.scenario);
     let mut env = touchline_dsl::build_env(scenario, &dir, config, args.seed).map_err(|e| match e {
         // A script failing at the first reset is the script's error, not the configuration's.
-        touchline_dsl::BuildError::Engine(EngineError::Script { message }) => {
-            CliError::Script { episode: 0, steps: 0, message }
-        }
+        touchline_dsl::BuildError::Engine(EngineError::Script { message }) => CliError::Script { episode: 0, message },
         touchline_dsl::BuildError::Engine(source) => CliError::Config {
             scenario: args.scenario.clone(),
             help: format!(

@@ -58,7 +58,7 @@ pub fn compile(source: &str, origin: &str) -> Result<Compiled, Diagnostics> {
 /// Reads and compiles the `.tl` file at `path`.
 ///
 /// # Errors
-/// `tl::E112` when the file cannot be read; otherwise as [`compile`].
+/// `tl::E150` when the file cannot be read; otherwise as [`compile`].
 pub fn compile_file(path: &Path) -> Result<Compiled, Diagnostics> {
     let origin = path.display().to_string();
     match crate::source_file::read_text(path) {
@@ -69,7 +69,15 @@ pub fn compile_file(path: &Path) -> Result<Compiled, Diagnostics> {
         Err(e) => {
             let source: Source = Arc::new(NamedSource::new(origin.clone(), String::new()));
             let mut diags = Diagnostics::default();
-            diags.push(Diagnostic::bare(Code::MissingImport, format!("cannot read `{origin}`: {e}"), &source));
+            let help = match e.kind() {
+                std::io::ErrorKind::NotFound => "check the path; a relative path starts from the current folder",
+                std::io::ErrorKind::InvalidData => "a scenario is a `.tl` text file in UTF-8 (grammar/README.md)",
+                _ => "a scenario is a regular `.tl` text file of at most 64 MiB",
+            };
+            diags.push(
+                Diagnostic::bare(Code::UnreadableSource, format!("cannot read `{origin}`: {e}"), &source)
+                    .with_help(help),
+            );
             Err(diags)
         }
     }

@@ -76,14 +76,14 @@ pub enum ScriptError {
 
     /// `tl::S005`: a hook failed while running: a runtime error, or an exhausted limit
     /// (operations, call depth, string/array/map size).
-    #[error("script `{path}`: `{hook}` failed at step {step}: {message}")]
+    #[error("script `{path}`: `{hook}` failed {}: {message}", when(hook, *step))]
     #[diagnostic(code(tl::S005))]
     Runtime {
         /// The script's path.
         path: String,
         /// The hook that failed.
         hook: &'static str,
-        /// Steps taken in the episode when it failed (0: at reset).
+        /// The step of the episode it failed in, 1 for the first (`reset` fails before any: 0).
         step: u32,
         /// rhai's message.
         message: String,
@@ -120,7 +120,7 @@ pub enum ScriptError {
 
     /// `tl::S009`: a reward term paid a value that is not finite (its weight times what the
     /// script returned overflows), or the step's reward overflowed when it was added in.
-    #[error("script `{path}`: the reward overflows at step {step}: {message}")]
+    #[error("script `{path}`: the reward overflows in step {step}: {message}")]
     #[diagnostic(
         code(tl::S009),
         help("scale the script's value or the term's `weight` down; a reward must stay a finite f32")
@@ -176,6 +176,12 @@ pub enum ScriptError {
         #[help]
         help: String,
     },
+}
+
+/// When a hook failed, in the words the env's step counts use: `in step 1` is the episode's first
+/// step (`info["steps"]` is 1 after it); `reset` runs before any.
+fn when(hook: &str, step: u32) -> String {
+    if hook == "reset" { "at the episode's reset".to_owned() } else { format!("in step {step}") }
 }
 
 /// Byte offset of rhai's 1-based `line` and `column` (a column counts characters) in `text`;

@@ -113,7 +113,9 @@ impl ScriptHooks {
         let value = self
             .engine
             .call_fn_with_options::<Dynamic>(options, &mut self.scopes[i], ast, "act", (state, me as rhai::INT))
-            .map_err(|e| Box::new(Self::runtime_error(&self.set.scripts[i], "act", step, &e)))?;
+            // `act` runs before the step it chooses for: that step's number is one more than
+            // the steps taken.
+            .map_err(|e| Box::new(Self::runtime_error(&self.set.scripts[i], "act", step + 1, &e)))?;
         let set = ActionSet::Default.actions();
         let action = if let Ok(index) = value.as_int() {
             usize::try_from(index).ok().and_then(|i| set.get(i).copied())
@@ -274,16 +276,28 @@ pub(crate) fn failure(e: &EvalAltResult) -> (String, Option<String>) {
         ),
         EvalAltResult::ErrorDotExpr(message, _) => match super::properties::unknown_at_run_time(message) {
             Some((message, help)) => (message, Some(help)),
-            None => (e.to_string(), None),
+            None => (without_position(&e.to_string()), None),
         },
+        EvalAltResult::ErrorRuntime(value, _) => (
+            format!("the script threw {}", if value.is_string() { format!("\"{value}\"") } else { value.to_string() }),
+            Some("`throw` in a hook fails the step (ErrorPolicy::Raise, the default); with ErrorPolicy::Warn the term pays 0 and the error is logged".to_owned()),
+        ),
         _ => (
-            e.to_string(),
+            without_position(&e.to_string()),
             Some(
                 "a hook that fails ends the step with this error (ErrorPolicy::Raise, the default); with \
                  ErrorPolicy::Warn the term pays 0 and the error is logged"
                     .to_owned(),
             ),
         ),
+    }
+}
+
+/// rhai's message without its " (line 2, position 23)" suffix: the label shows where.
+fn without_position(message: &str) -> String {
+    match message.rfind(" (line ") {
+        Some(at) if message.ends_with(')') => message[..at].to_owned(),
+        _ => message.to_owned(),
     }
 }
 

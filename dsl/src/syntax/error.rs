@@ -30,7 +30,10 @@ pub(super) fn syntax_error(e: pest::error::Error<Rule>, source: &Source) -> Diag
         pest::error::InputLocation::Span((a, b)) => (a, b),
     };
     let text = source.inner().as_str();
-    if let Some(d) = unterminated_string(text, start, source).or_else(|| missing_brace(&e, text, start, source)) {
+    if let Some(d) = unterminated_string(text, start, source)
+        .or_else(|| missing_brace(&e, text, start, source))
+        .or_else(|| non_ascii_name(text, start, source))
+    {
         return d;
     }
     // Point at the offending token (up to the next space) rather than at a zero-width gap.
@@ -149,6 +152,50 @@ fn missing_brace(e: &pest::error::Error<Rule>, text: &str, at: usize, source: &S
         )
         .with_help(format!("a `}}` closing the team block is missing before `{word}`")),
     )
+}
+
+/// A name with a letter outside ASCII (`gäp`): pest stops at the letter and would list what may
+/// follow a name; the grammar's names are ASCII letters, digits and `_`.
+fn non_ascii_name(text: &str, at: usize, source: &Source) -> Option<Diagnostic> {
+    let letter = text[at..].chars().next().filter(|c| !c.is_ascii() && c.is_alphabetic())?;
+    let name_char = |c: char| c.is_alphanumeric() || c == '_';
+    let start = text[..at].char_indices().rev().take_while(|&(_, c)| name_char(c)).last().map_or(at, |(i, _)| i);
+    let end = text[at..].char_indices().find(|&(_, c)| !name_char(c)).map_or(text.len(), |(i, _)| at + i);
+    let word = &text[start..end];
+    let ascii: String = word.chars().map(ascii_letter).collect();
+    Some(
+        Diagnostic::new(
+            Code::Syntax,
+            format!("syntax error: `{word}` is not a name: names are ASCII"),
+            source,
+            Span { start, end },
+            format!("`{letter}` is not an ASCII letter"),
+        )
+        .with_help(format!(
+            "a name is ASCII letters, digits and `_` (non-ASCII text may go in strings and comments): `{ascii}`?"
+        )),
+    )
+}
+
+/// The ASCII letter a Latin letter with a diacritic is written with, else `_`.
+fn ascii_letter(c: char) -> char {
+    if c.is_ascii() {
+        return c;
+    }
+    match c.to_lowercase().next().unwrap_or(c) {
+        'à' | 'á' | 'â' | 'ã' | 'ä' | 'å' | 'ā' => 'a',
+        'ç' | 'č' | 'ć' => 'c',
+        'è' | 'é' | 'ê' | 'ë' | 'ē' | 'ę' => 'e',
+        'ì' | 'í' | 'î' | 'ï' => 'i',
+        'ñ' | 'ń' => 'n',
+        'ò' | 'ó' | 'ô' | 'õ' | 'ö' | 'ø' | 'ō' => 'o',
+        'ù' | 'ú' | 'û' | 'ü' | 'ū' => 'u',
+        'ý' | 'ÿ' => 'y',
+        'š' | 'ś' => 's',
+        'ž' | 'ź' | 'ż' => 'z',
+        'ł' => 'l',
+        _ => '_',
+    }
 }
 
 fn join_or(names: &[String]) -> String {

@@ -43,7 +43,7 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
 
     // A ball on its way into the goal: get across to where it crosses the line.
     if view.owner.is_none() {
-        for (k, p) in analysis.path.at.iter().enumerate() {
+        for (k, p) in analysis.path.at().iter().enumerate() {
             let p_t = frame.vec2(p.truncate());
             if p_t.x < -HALF_LENGTH + 1.0 {
                 if p_t.y.abs() < GOAL_HALF_WIDTH + 1.0 && p.z < 3.0 {

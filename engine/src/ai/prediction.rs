@@ -1,6 +1,6 @@
 //! Where the ball is going and who gets there first.
 
-use glam::{Vec2, Vec3};
+use glam::{Vec2, Vec3, Vec4};
 
 use super::{Analysis, Difficulty, MatchView};
 use crate::geometry::pitch::{BALL_RADIUS, GRAVITY};
@@ -12,15 +12,50 @@ pub const SAMPLES: usize = 20;
 /// Time between samples (s).
 pub const SAMPLE_DT: f32 = 0.1;
 
+/// The sample times (s): `SAMPLE_DT · (k + 1)` for sample k, as the samples are timed.
+const TIMES: [f32; SAMPLES] = {
+    let mut times = [0.0; SAMPLES];
+    let mut k = 0;
+    while k < SAMPLES {
+        times[k] = SAMPLE_DT * (k + 1) as f32;
+        k += 1;
+    }
+    times
+};
+
+/// Samples in a group of the path's lanes (a `Vec4`).
+const LANE: usize = 4;
+const GROUPS: usize = SAMPLES / LANE;
+const _: () = assert!(SAMPLES.is_multiple_of(LANE));
+
 /// The ball's predicted positions at 0.1 s, 0.2 s, … 2.0 s (m), from a simplified model (no goal
 /// frames, no players).
 #[derive(Clone, Copy, Debug)]
 pub struct BallPath {
     /// Predicted positions.
-    pub at: [Vec3; SAMPLES],
+    at: [Vec3; SAMPLES],
+    /// The same positions' x, y and z apart, four samples to a `Vec4`: [`BallPath::intercept`],
+    /// run for every player at every decision, tests four samples at once with SIMD.
+    lanes: [[Vec4; GROUPS]; 3],
 }
 
 impl BallPath {
+    /// The path through the predicted positions `at`.
+    pub fn new(at: [Vec3; SAMPLES]) -> BallPath {
+        let mut lanes = [[Vec4::ZERO; GROUPS]; 3];
+        for (c, group) in at.chunks_exact(LANE).enumerate() {
+            for (axis, lane) in lanes.iter_mut().enumerate() {
+                lane[c] = Vec4::from_array([group[0][axis], group[1][axis], group[2][axis], group[3][axis]]);
+            }
+        }
+        BallPath { at, lanes }
+    }
+
+    /// The predicted positions, 0.1 s apart from 0.1 s on (m).
+    pub fn at(&self) -> &[Vec3; SAMPLES] {
+        &self.at
+    }
+
     /// Predicts the path of a free ball (an owned ball moves with its owner).
     pub fn predict(ball: &Ball) -> BallPath {
         let mut at = [Vec3::ZERO; SAMPLES];
@@ -48,17 +83,30 @@ impl BallPath {
             }
             *slot = p;
         }
-        BallPath { at }
+        BallPath::new(at)
     }
 
     /// Earliest time (s) and place a runner at `from` with top speed `speed` (m/s) can meet the
     /// ball below `max_height` (m); after the horizon, the last sample plus the run to it.
+    ///
+    /// The first sample k with `z <= max_height` and `|xy − from| − 0.6 <= speed · t_k`, tested
+    /// four samples at a time: each lane computes what a scalar loop over the samples would
+    /// (glam's `Vec4` arithmetic and square root are IEEE's, lane by lane), so the answer is the
+    /// same bit for bit.
     pub fn intercept(&self, from: Vec2, speed: f32, max_height: f32) -> (f32, Vec2) {
-        let reach = 0.6;
-        for (k, p) in self.at.iter().enumerate() {
-            let t = SAMPLE_DT * (k + 1) as f32;
-            if p.z <= max_height && (p.truncate().distance(from) - reach) <= speed * t {
-                return (t, p.truncate());
+        let reach = Vec4::splat(0.6);
+        let (fx, fy) = (Vec4::splat(from.x), Vec4::splat(from.y));
+        let (speed4, max_height) = (Vec4::splat(speed), Vec4::splat(max_height));
+        let [xs, ys, zs] = &self.lanes;
+        for c in 0..GROUPS {
+            let (dx, dy) = (xs[c] - fx, ys[c] - fy);
+            let distance = (dx * dx + dy * dy).sqrt();
+            let t = Vec4::from_slice(&TIMES[c * LANE..]);
+            let meets = zs[c].cmple(max_height) & (distance - reach).cmple(speed4 * t);
+            let mask = meets.bitmask();
+            if mask != 0 {
+                let k = c * LANE + mask.trailing_zeros() as usize;
+                return (TIMES[k], self.at[k].truncate());
             }
         }
         let last = self.at[SAMPLES - 1].truncate();
@@ -77,7 +125,7 @@ pub fn analyse(view: &MatchView, side: Side, _difficulty: &Difficulty) -> Analys
                 let t = SAMPLE_DT * (k + 1) as f32;
                 *slot = (view.ball.xy() + owner.velocity * t.min(0.8)).extend(BALL_RADIUS);
             }
-            BallPath { at }
+            BallPath::new(at)
         }
         None => BallPath::predict(view.ball),
     };
@@ -127,5 +175,45 @@ mod tests {
         assert!(steps.windows(2).all(|s| s[1] <= s[0]));
         let (t, at) = path.intercept(Vec2::new(10.0, 0.0), 8.0, 1.0);
         assert!(t < 1.0 && at.x > 0.0);
+    }
+
+    /// The scalar intercept the SIMD one must equal.
+    fn intercept_sample_by_sample(path: &BallPath, from: Vec2, speed: f32, max_height: f32) -> (f32, Vec2) {
+        for (k, p) in path.at.iter().enumerate() {
+            let t = SAMPLE_DT * (k + 1) as f32;
+            if p.z <= max_height && (p.truncate().distance(from) - 0.6) <= speed * t {
+                return (t, p.truncate());
+            }
+        }
+        let last = path.at[SAMPLES - 1].truncate();
+        (SAMPLE_DT * SAMPLES as f32 + last.distance(from) / speed, last)
+    }
+
+    #[test]
+    fn intercepts_are_those_of_a_sample_by_sample_search() {
+        let mut state: u32 = 0x9e37_79b9;
+        let mut next = move |scale: f32| {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            ((state % 20_001) as f32 / 10_000.0 - 1.0) * scale
+        };
+        for _ in 0..2_000 {
+            let mut b = Ball::at_rest(Vec2::new(next(50.0), next(30.0)));
+            b.position.z = 0.11 + next(3.0).abs();
+            b.velocity = Vec3::new(next(25.0), next(25.0), next(10.0));
+            let path = BallPath::predict(&b);
+            let from = Vec2::new(next(50.0), next(30.0));
+            let height = [1.0, 2.5][usize::from(next(1.0) > 0.0)];
+            // A random top speed, and those on the edge of meeting one sample or missing it.
+            let k = (next(1.0).abs() * (SAMPLES - 1) as f32) as usize;
+            let edge = (path.at[k].truncate().distance(from) - 0.6) / TIMES[k];
+            for speed in [next(9.0).abs(), edge, edge.next_up(), edge.next_down()] {
+                let (t, at) = path.intercept(from, speed, height);
+                let (t0, at0) = intercept_sample_by_sample(&path, from, speed, height);
+                let bits = |t: f32, at: Vec2| (t.to_bits(), at.to_array().map(f32::to_bits));
+                assert_eq!(bits(t, at), bits(t0, at0), "speed {speed}");
+            }
+        }
     }
 }

@@ -37,7 +37,7 @@ pub fn scored(before: Vec3, after: Vec3) -> Option<Side> {
 pub fn on_target(ball: &crate::physics::Ball) -> bool {
     let path = crate::ai::BallPath::predict(ball);
     let mut before = ball.position;
-    for &after in &path.at {
+    for &after in path.at() {
         if scored(before, after).is_some() {
             return true;
         }

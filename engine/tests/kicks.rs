@@ -57,6 +57,37 @@ fn a_long_pass_with_only_the_keeper_to_receive_goes_back_to_him() {
 }
 
 #[test]
+fn a_pass_played_straight_back_leaves_the_ball_where_it_lay_while_he_turns() {
+    // academy_run_to_score: five defenders chase our CB from behind; at step 8 he plays a long
+    // pass back to our keeper. GRF 2.10 (measured): the ball stays where it lies through the
+    // 400 ms of his turn and is lofted over the chasers; it never swings round behind him.
+    for seed in 0..4 {
+        let mut env = common::env("academy_run_to_score", seed);
+        play(&mut env, &[], 8);
+        assert!(owned_by_agent(&env), "seed {seed}");
+        env.step(&[Action::LongPass]).unwrap();
+        let lay = env.observations()[0].ball;
+        let mut during_turn = Vec::new();
+        for _ in 0..12 {
+            env.step(&[Action::Idle]).unwrap();
+            let o = &env.observations()[0];
+            if o.ball_owned_team != 0 {
+                break;
+            }
+            during_turn.push(o.ball);
+        }
+        assert!(!during_turn.is_empty(), "seed {seed}: he winds up with the ball");
+        for b in &during_turn {
+            let moved = ((b[0] - lay[0]).powi(2) + (b[1] - lay[1]).powi(2)).sqrt() * 54.4;
+            assert!(moved < 0.3, "seed {seed}: the ball moved {moved} m during the turn");
+        }
+        let (ball, _) = play(&mut env, &[], 20);
+        let back = ball.iter().map(|b| b[0]).fold(f32::MAX, f32::min);
+        assert!(back < -0.15, "seed {seed}: the pass goes back over the chasers, to x = {back}");
+    }
+}
+
+#[test]
 fn the_ball_leaves_the_foot_after_the_release_and_the_wind_up() {
     // academy_empty_goal_close, the CB facing the empty goal with the ball: one step of shot.
     // GRF shows the ball at his feet owned by nobody until he plays it; his button counts.

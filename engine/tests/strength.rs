@@ -60,7 +60,9 @@ fn equal_sides_are_level_and_play_football() {
     assert!(gd.abs() < 1.0, "mean goal difference {gd:+.2}");
     assert!((40.0..60.0).contains(&possession), "possession {possession:.1} %");
     assert!((1.0..6.0).contains(&goals), "goals per match {goals:.2}");
-    assert!(completed > 80.0, "completed passes per match {completed:.1}");
+    // GRF's built-in AI completes about 50 passes a match (python/bench/grf_reference.json,
+    // the texture cases): a side that passes at all, not a number tuned to ours.
+    assert!(completed > 40.0, "completed passes per match {completed:.1}");
     assert!(out_of_play > 1.0, "restarts from the ball going out per match {out_of_play:.2}");
     // The AI slides and fouls (issue 15): GRF gives about 4 free kicks a match.
     let fouls = mean(&stats, |s| f64::from(s.teams[0].fouls + s.teams[1].fouls));

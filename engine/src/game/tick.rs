@@ -407,8 +407,19 @@ impl Match {
             return;
         }
         if let Some(g) = self.owner {
-            // At the owner's feet, half a metre ahead of him.
             let p = &self.players[g];
+            if p.pending_kick.is_some() {
+                // Winding up a kick he turns on the spot, and the ball stays where it lies, moving
+                // only with him as he slows to a stop: GRF's kick animations place the body round
+                // the ball (measured in GRF 2.10, a pass played straight back leaves the ball
+                // still through the 400 ms of the turn), so a turn never swings the ball behind
+                // him into a chaser's path.
+                self.ball.position += (p.velocity * TICK_SECONDS).extend(0.0);
+                self.ball.velocity = p.velocity.extend(0.0);
+                self.carry_distance = p.position.distance(self.ball.xy());
+                return;
+            }
+            // At the owner's feet, half a metre ahead of him.
             self.carry_distance += (CARRY_DISTANCE - self.carry_distance).clamp(-0.01, 0.01);
             let at = p.position + p.facing * self.carry_distance;
             self.ball.position = at.extend(crate::geometry::pitch::BALL_RADIUS);

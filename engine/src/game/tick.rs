@@ -318,17 +318,20 @@ impl Match {
                 acceleration: base.acceleration - 1.0 + 2.0 * p.skill(p.attributes.acceleration, theta),
                 ..base
             };
-            let mut input = self.inputs[g];
+            // The input's velocity and look, by value: copying the whole input (two kicks
+            // included) to pass it on cost more than the rest of this loop.
+            let input = &self.inputs[g];
+            let (mut velocity, mut look) = (input.velocity, input.look);
             if let Some(aim) = aims[g] {
                 // Winding up a kick: he slows to a stop and turns to its target.
-                input.velocity = Vec2::ZERO;
-                input.look = aim;
+                velocity = Vec2::ZERO;
+                look = aim;
             } else if let Some(step) = controls[g] {
-                input.velocity = step;
+                velocity = step;
             }
             if self.taker == Some(g) {
                 // A set-piece taker stands at the ball until he plays it.
-                input.velocity = Vec2::ZERO;
+                velocity = Vec2::ZERO;
             } else {
                 let cap = if self.owner == Some(g) {
                     if input.dribble { DRIBBLE_SPEED } else { BALL_CARRIER_SPRINT.min(p.max_speed) }
@@ -337,12 +340,12 @@ impl Match {
                 } else {
                     p.max_speed
                 };
-                let speed2 = input.velocity.length_squared();
+                let speed2 = velocity.length_squared();
                 if speed2 > cap * cap {
-                    input.velocity *= cap / speed2.sqrt();
+                    velocity *= cap / speed2.sqrt();
                 }
             }
-            move_player(p, &input, limits, TICK_SECONDS);
+            move_player(p, velocity, look, limits, TICK_SECONDS);
         }
     }
 

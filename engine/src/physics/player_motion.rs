@@ -3,7 +3,6 @@
 
 use glam::{Vec2, Vec4};
 
-use crate::game::PlayerInput;
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH, RIM_HALF_LENGTH, RIM_HALF_WIDTH};
 use crate::player::{MAX_PLAYERS_PER_TEAM, Player};
 
@@ -30,9 +29,10 @@ impl Default for MotionLimits {
 const TURN_COS: f32 = 0.992_808_6;
 const TURN_SIN: f32 = 0.119_712_2;
 
-/// Moves `player` one tick of `dt` seconds following `input`.
-pub(crate) fn move_player(player: &mut Player, input: &PlayerInput, limits: MotionLimits, dt: f32) {
-    let mut desired = input.velocity;
+/// Moves `player` one tick of `dt` seconds at the velocity he asks for (m/s), turning to `look`
+/// when he stands (a [`crate::game::PlayerInput`]'s velocity and look, after the match's caps).
+pub(crate) fn move_player(player: &mut Player, velocity: Vec2, look: Vec2, limits: MotionLimits, dt: f32) {
+    let mut desired = velocity;
     // Inputs that push a player further outside the pitch are dropped (grf.md §5.4).
     if player.position.x.abs() > HALF_LENGTH + 2.0 && desired.x * player.position.x > 0.0 {
         desired.x = 0.0;
@@ -48,7 +48,7 @@ pub(crate) fn move_player(player: &mut Player, input: &PlayerInput, limits: Moti
     player.velocity += if len2 > max_dv * max_dv { dv * (max_dv / len2.sqrt()) } else { dv };
     player.position += player.velocity * dt;
 
-    let look = if desired.length_squared() > 0.25 { desired } else { input.look };
+    let look = if desired.length_squared() > 0.25 { desired } else { look };
     turn_towards(&mut player.facing, look);
 }
 

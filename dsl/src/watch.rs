@@ -280,10 +280,37 @@ impl Watched {
     /// # Errors
     /// As [`Env::with_hooks`].
     pub fn env(&self, config: EnvConfig, seed: u64) -> Result<Env, EngineError> {
+        self.env_playing(config, seed).map(|(env, _)| env)
+    }
+
+    /// As [`Watched::env`], with a handle telling which generation the env plays: the one it
+    /// switched to at its last reset (not the newest compiled, which it takes at its next reset,
+    /// and not one it refused).
+    ///
+    /// # Errors
+    /// As [`Watched::env`].
+    pub fn env_playing(&self, config: EnvConfig, seed: u64) -> Result<(Env, Playing), EngineError> {
         let (generation, build) = self.shared.current();
-        let hooks =
-            WatchedHooks { shared: Arc::clone(&self.shared), generation, inner: build.scripts.hooks(), previous: None };
-        Env::with_hooks(build.scenario.clone(), config, seed, Box::new(hooks))
+        let playing = Playing(Arc::new(AtomicU64::new(generation)));
+        let hooks = WatchedHooks {
+            shared: Arc::clone(&self.shared),
+            generation,
+            inner: build.scripts.hooks(),
+            previous: None,
+            playing: playing.clone(),
+        };
+        Ok((Env::with_hooks(build.scenario.clone(), config, seed, Box::new(hooks))?, playing))
+    }
+}
+
+/// Which generation of a [`Watched`] scenario an env plays (see [`Watched::env_playing`]).
+#[derive(Clone, Debug)]
+pub struct Playing(Arc<AtomicU64>);
+
+impl Playing {
+    /// The generation (1 for the first compile).
+    pub fn generation(&self) -> u64 {
+        self.0.load(Ordering::Acquire)
     }
 }
 
@@ -403,7 +430,9 @@ struct WatchedHooks {
     generation: u64,
     inner: ScriptHooks,
     /// The hooks before the last swap, kept until the env accepts the new scenario.
-    previous: Option<ScriptHooks>,
+    previous: Option<(ScriptHooks, u64)>,
+    /// The generation the env plays, for its owner.
+    playing: Playing,
 }
 
 impl std::fmt::Debug for WatchedHooks {
@@ -449,14 +478,17 @@ impl Hooks for WatchedHooks {
             return None;
         }
         let (generation, build) = self.shared.current();
+        let before = self.playing.generation();
         self.generation = generation;
-        self.previous = Some(std::mem::replace(&mut self.inner, build.scripts.hooks()));
+        self.playing.0.store(generation, Ordering::Release);
+        self.previous = Some((std::mem::replace(&mut self.inner, build.scripts.hooks()), before));
         Some(build.scenario.clone())
     }
 
     fn scenario_refused(&mut self, error: &EngineError) {
-        if let Some(previous) = self.previous.take() {
+        if let Some((previous, generation)) = self.previous.take() {
             self.inner = previous;
+            self.playing.0.store(generation, Ordering::Release);
         }
         self.shared.tell(&WatchEvent::Refused(error));
     }
@@ -467,6 +499,8 @@ impl Hooks for WatchedHooks {
             generation: self.generation,
             inner: self.inner.clone_of(),
             previous: None,
+            // A copy plays on its own: its version is its own from here.
+            playing: Playing(Arc::new(AtomicU64::new(self.playing.generation()))),
         })
     }
 }

@@ -165,3 +165,38 @@ fn only_content_changes_reload_and_each_failure_is_reported_once() {
     assert_eq!(reports.lock().unwrap().reloads, [2, 3]);
     assert_eq!(reports.lock().unwrap().failures.len(), 1);
 }
+
+/// Issue 18, item 4: `env_playing` tells the version an env plays: the newest compiled only from
+/// the env's next reset, and not a version the env refused (another number of controllable
+/// players than its agents need).
+#[test]
+fn the_version_played_follows_resets_and_refusals() {
+    let dir = std::env::temp_dir().join(format!("touchline-watch-playing-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let spec = dir.join("drill.tl");
+    let drill = |ball: &str, right: &str| {
+        format!(
+            "scenario drill {{\n  extends academy_empty_goal_close\n  ball at ({ball})\n  team left {{\n    GK at (-1, 0)\n    CB at (0.5, 0)\n  }}\n  team right {{\n    GK at (-1, 0){right}\n  }}\n}}\n"
+        )
+    };
+    std::fs::write(&spec, drill("0.5, 0", "")).unwrap();
+    let watched = Watched::new(spec.to_str().unwrap(), ScriptOptions::default()).unwrap();
+    // Two agents: the left CB and the right GK.
+    let config = EnvConfig { left_agents: 1, right_agents: 1, ..EnvConfig::default() };
+    let (mut env, playing) = watched.env_playing(config, 0).unwrap();
+    assert_eq!(playing.generation(), 1);
+
+    std::fs::write(&spec, drill("-0.2, 0", "")).unwrap();
+    eventually("the edit to compile", || watched.generation() == 2);
+    assert_eq!(playing.generation(), 1, "the episode under way keeps its version");
+    env.reset().unwrap();
+    assert_eq!(playing.generation(), 2);
+    assert!((env.observations()[0].ball[0] + 0.2).abs() < 1e-3);
+
+    // The right GK made not controllable: the right agent has no one to drive, the env refuses it.
+    std::fs::write(&spec, drill("0.3, 0", " not controllable")).unwrap();
+    eventually("the edit to compile", || watched.generation() == 3);
+    let _ = env.reset();
+    assert_eq!(playing.generation(), 2, "a refused version is not played");
+}

@@ -73,6 +73,8 @@ pub(crate) struct EnvArgs {
     pub(crate) representation: Representation,
     pub(crate) config: EnvConfig,
     pub(crate) stacked: bool,
+    /// With `watch=True`: the watched source every env made from these arguments follows.
+    pub(crate) watch: Option<std::sync::Arc<crate::watch::Watch>>,
 }
 
 impl EnvArgs {
@@ -87,15 +89,23 @@ impl EnvArgs {
         action_set: &str,
         stacked: bool,
         channel_dimensions: (usize, usize),
+        watch: bool,
     ) -> PyResult<EnvArgs> {
         let spec = scenario;
-        let scenario = touchline_dsl::load(spec).map_err(|e| crate::errors::scenario_error(py, &e))?;
-        let scripts = touchline_dsl::script::Scripts::compile(
-            &scenario,
-            &touchline_dsl::script_dir(spec),
-            touchline_dsl::script::ScriptOptions::default(),
-        )
-        .map_err(|e| crate::errors::script_errors(py, &e))?;
+        let (scenario, scripts, watch) = if watch {
+            let watch = crate::watch::Watch::start(py, spec)?;
+            let build = watch.watched.current();
+            (build.scenario.clone(), build.scripts.clone(), Some(watch))
+        } else {
+            let scenario = touchline_dsl::load(spec).map_err(|e| crate::errors::scenario_error(py, &e))?;
+            let scripts = touchline_dsl::script::Scripts::compile(
+                &scenario,
+                &touchline_dsl::script_dir(spec),
+                touchline_dsl::script::ScriptOptions::default(),
+            )
+            .map_err(|e| crate::errors::script_errors(py, &e))?;
+            (scenario, scripts, None)
+        };
         let representation = Representation::parse(representation, channel_dimensions)?;
         let mut checkpoints = false;
         let mut scoring = false;
@@ -131,6 +141,7 @@ impl EnvArgs {
             representation,
             config: EnvConfig { left_agents, right_agents, action_set, checkpoints },
             stacked,
+            watch,
         })
     }
 }
@@ -183,14 +194,24 @@ pub(crate) struct EnvCore {
     /// The info of the last step that ended an episode (a vector env resets at once, and its
     /// `final_info` still reports the finished episode's score).
     pub(crate) final_info: StepInfo,
+    /// The scenario version of the step that ended the last episode.
+    pub(crate) final_version: u64,
     /// The last step ended the episode and the match has not been reset since (vector envs in
     /// [`Autoreset::NextStep`] and [`Autoreset::Disabled`]).
     pub(crate) ended: bool,
+    /// With `watch=True`: which version of the scenario the match plays.
+    pub(crate) playing: Option<touchline_dsl::watch::Playing>,
 }
 
 impl EnvCore {
     pub(crate) fn new(args: &EnvArgs, seed: u64) -> Result<EnvCore, EngineError> {
-        let env = touchline_dsl::attach(&args.scripts, args.scenario.clone(), args.config, seed)?;
+        let (env, playing) = match &args.watch {
+            Some(watch) => {
+                let (env, playing) = watch.watched.env_playing(args.config, seed)?;
+                (env, Some(playing))
+            }
+            None => (touchline_dsl::attach(&args.scripts, args.scenario.clone(), args.config, seed)?, None),
+        };
         let (shape, channels) = args.representation.frame();
         let frame_len: usize = if shape.is_empty() { 0 } else { shape.iter().product() };
         let m = env.num_controllers();
@@ -210,7 +231,9 @@ impl EnvCore {
             stacks_u8,
             frame_u8: vec![0; frame_len],
             final_info: StepInfo::default(),
+            final_version: 0,
             ended: false,
+            playing,
             pixels: match args.representation {
                 Representation::Pixels { width, height, gray } => {
                     let kind = if gray { PixelsKind::Gray } else { PixelsKind::Rgb };
@@ -220,6 +243,12 @@ impl EnvCore {
                 _ => None,
             },
         })
+    }
+
+    /// The version of the scenario played: 0 without `watch=True`, else the watcher's generation
+    /// (1 for the file as first loaded, one more for each change that compiled and was taken up).
+    pub(crate) fn scenario_version(&self) -> u64 {
+        self.playing.as_ref().map_or(0, touchline_dsl::watch::Playing::generation)
     }
 
     /// Shape of one controller's observation (stacking included).
@@ -303,6 +332,7 @@ impl EnvCore {
         let outcome = self.env.step_indices(actions)?;
         if outcome.terminated || outcome.truncated {
             self.final_info = *self.env.info();
+            self.final_version = self.scenario_version();
         }
         Ok(outcome)
     }

@@ -23,6 +23,8 @@ pub(crate) struct PyEnv {
     actions: Vec<u32>,
     /// The renderer of `render()`, made at the first call (and again for another size).
     renderer: Option<Renderer>,
+    /// With `watch=True`: the watched source (its messages for `watch_messages`).
+    watch: Option<std::sync::Arc<crate::watch::Watch>>,
 }
 
 /// What an `Env` was made with (see [`PyEnv::__getnewargs_ex__`]).
@@ -36,6 +38,7 @@ struct InitArgs {
     seed: u64,
     stacked: bool,
     channel_dimensions: (usize, usize),
+    watch: bool,
 }
 
 /// Reads one action index per controller from an int, a sequence or a numpy array.
@@ -105,7 +108,7 @@ impl PyEnv {
 #[pymethods]
 impl PyEnv {
     #[new]
-    #[pyo3(signature = (scenario, *, representation = "simple115v2", left_agents = 1, right_agents = 0, rewards = "scoring", action_set = "default", seed = 0, stacked = false, channel_dimensions = (96, 72)))]
+    #[pyo3(signature = (scenario, *, representation = "simple115v2", left_agents = 1, right_agents = 0, rewards = "scoring", action_set = "default", seed = 0, stacked = false, channel_dimensions = (96, 72), watch = false))]
     #[expect(clippy::too_many_arguments, reason = "Python keyword arguments")]
     fn new(
         py: Python<'_>,
@@ -118,6 +121,7 @@ impl PyEnv {
         seed: u64,
         stacked: bool,
         channel_dimensions: (usize, usize),
+        watch: bool,
     ) -> PyResult<PyEnv> {
         guard(|| {
             let args = EnvArgs::parse(
@@ -130,8 +134,10 @@ impl PyEnv {
                 action_set,
                 stacked,
                 channel_dimensions,
+                watch,
             )?;
             let core = EnvCore::new(&args, seed).map_err(engine_error)?;
+            let watch = args.watch;
             let init = InitArgs {
                 scenario: scenario.to_owned(),
                 representation: representation.to_owned(),
@@ -142,8 +148,9 @@ impl PyEnv {
                 seed,
                 stacked,
                 channel_dimensions,
+                watch: watch.is_some(),
             };
-            Ok(PyEnv { core, init, actions: Vec::new(), renderer: None })
+            Ok(PyEnv { core, init, watch, actions: Vec::new(), renderer: None })
         })
     }
 
@@ -183,6 +190,19 @@ impl PyEnv {
         self.core.env.lesson().map(|(i, name)| (i, name.to_owned()))
     }
 
+    /// The version of the scenario the env plays: 0 without `watch=True`; with it, 1 for the file
+    /// as first loaded and the watcher's count of good compiles since, taken up at a reset.
+    #[getter]
+    fn scenario_version(&self) -> u64 {
+        self.core.scenario_version()
+    }
+
+    /// What the watcher reported since the last call (failed compiles, refused versions), as
+    /// rendered text, oldest first; always empty without `watch=True`.
+    fn watch_messages(&self) -> Vec<String> {
+        self.watch.as_ref().map(|w| w.take_messages()).unwrap_or_default()
+    }
+
     #[getter]
     fn game_duration(&self) -> u32 {
         self.core.env.scenario().game_duration
@@ -206,6 +226,7 @@ impl PyEnv {
             let obs = self.observation(py, false)?;
             let rewards = PyArray1::from_slice(py, self.core.env.rewards());
             let info = info_dict(py, self.core.env.info())?;
+            info.set_item("scenario_version", self.core.scenario_version())?;
             if let Some((_, name)) = self.core.env.lesson() {
                 info.set_item("lesson_name", name)?;
             }
@@ -239,6 +260,7 @@ impl PyEnv {
         kwargs.set_item("seed", i.seed)?;
         kwargs.set_item("stacked", i.stacked)?;
         kwargs.set_item("channel_dimensions", i.channel_dimensions)?;
+        kwargs.set_item("watch", i.watch)?;
         Ok((PyTuple::new(py, [&i.scenario])?, kwargs))
     }
 

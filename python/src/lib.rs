@@ -8,6 +8,7 @@ mod core;
 mod env;
 mod errors;
 mod vector;
+mod watch;
 mod worker;
 
 use pyo3::prelude::*;

@@ -21,6 +21,8 @@ pub(crate) struct PyVectorEnv {
     workers: Vec<Worker>,
     actions: Vec<u32>,
     mode: Autoreset,
+    /// With `watch=True`: the watched source all the matches follow.
+    watch: Option<std::sync::Arc<crate::watch::Watch>>,
 }
 
 /// The observation array the caller passed: float32 or uint8, (num_envs, M, *shape).
@@ -102,11 +104,11 @@ impl ObsElem for u8 {
 
 /// Columns of a vector env's info row: score left, score right, steps left, game mode, score
 /// reward, checkpoint reward, event reward, script reward, script errors, steps, episode index,
-/// lesson (the order `touchline/vector.py` reads them in).
-const INFO_COLUMNS: usize = 12;
+/// lesson, scenario version (the order `touchline/vector.py` reads them in).
+const INFO_COLUMNS: usize = 13;
 
-/// Writes `info` as one row of [`INFO_COLUMNS`].
-fn info_row(info: &StepInfo, row: &mut [f64]) {
+/// Writes `info` and the scenario version as one row of [`INFO_COLUMNS`].
+fn info_row(info: &StepInfo, version: u64, row: &mut [f64]) {
     let values = [
         f64::from(info.score[0]),
         f64::from(info.score[1]),
@@ -120,6 +122,7 @@ fn info_row(info: &StepInfo, row: &mut [f64]) {
         f64::from(info.steps),
         info.episode as f64,
         info.lesson as f64,
+        version as f64,
     ];
     row.copy_from_slice(&values);
 }
@@ -206,7 +209,7 @@ impl PyVectorEnv {
 #[pymethods]
 impl PyVectorEnv {
     #[new]
-    #[pyo3(signature = (scenario, num_envs, *, num_threads = 0, representation = "simple115v2", left_agents = 1, right_agents = 0, rewards = "scoring", action_set = "default", seed = 0, stacked = false, channel_dimensions = (96, 72), autoreset_mode = "SameStep"))]
+    #[pyo3(signature = (scenario, num_envs, *, num_threads = 0, representation = "simple115v2", left_agents = 1, right_agents = 0, rewards = "scoring", action_set = "default", seed = 0, stacked = false, channel_dimensions = (96, 72), autoreset_mode = "SameStep", watch = false))]
     #[expect(clippy::too_many_arguments, reason = "Python keyword arguments")]
     fn new(
         py: Python<'_>,
@@ -222,6 +225,7 @@ impl PyVectorEnv {
         stacked: bool,
         channel_dimensions: (usize, usize),
         autoreset_mode: &str,
+        watch: bool,
     ) -> PyResult<PyVectorEnv> {
         guard(|| {
             let mode = Autoreset::parse(autoreset_mode)?;
@@ -238,6 +242,7 @@ impl PyVectorEnv {
                 action_set,
                 stacked,
                 channel_dimensions,
+                watch,
             )?;
             if args.representation == crate::core::Representation::Raw {
                 return Err(PyValueError::new_err(
@@ -266,8 +271,13 @@ impl PyVectorEnv {
                 workers.push(worker);
                 rest = tail;
             }
-            Ok(PyVectorEnv { envs, workers, actions: Vec::new(), mode })
+            Ok(PyVectorEnv { envs, workers, actions: Vec::new(), mode, watch: args.watch })
         })
+    }
+
+    /// What the watcher reported since the last call, as rendered text; empty without `watch=True`.
+    fn watch_messages(&self) -> Vec<String> {
+        self.watch.as_ref().map(|w| w.take_messages()).unwrap_or_default()
     }
 
     #[getter]
@@ -400,8 +410,8 @@ impl PyVectorEnv {
             let envs = self.envs.iter().chain(guards.iter().flat_map(|g| g.envs.iter()));
             for ((e, row), final_row) in envs.zip(current.chunks_mut(INFO_COLUMNS)).zip(finals.chunks_mut(INFO_COLUMNS))
             {
-                info_row(e.env.info(), row);
-                info_row(&e.final_info, final_row);
+                info_row(e.env.info(), e.scenario_version(), row);
+                info_row(&e.final_info, e.final_version, final_row);
             }
             Ok(())
         })

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import secrets
+import warnings
 from typing import Any
 
 import numpy as np
@@ -163,6 +164,7 @@ def core_env(
     seed: int | None,
     stacked: bool,
     channel_dimensions: Any,
+    watch: bool = False,
 ) -> _CoreEnv:
     """The extension's `Env` from user arguments, each checked (and `representation` already
     checked by the caller, who decides whether "raw" is allowed)."""
@@ -176,7 +178,22 @@ def core_env(
         seed=seed_argument(seed),
         stacked=bool(stacked),
         channel_dimensions=channel_dimensions_argument(channel_dimensions),
+        watch=watch_argument(watch),
     )
+
+
+def watch_argument(watch: Any) -> bool:
+    """Checks `watch`: True or False (the extension refuses True for a stdlib name: no file)."""
+    if not isinstance(watch, (bool, np.bool_)):
+        raise ValueError(f"watch must be True or False, got {watch!r}")
+    return bool(watch)
+
+
+def show_watch_messages(core: Any) -> None:
+    """Turns each message of a watched scenario's watcher (a change that does not load, a version
+    the env refused) into one `UserWarning`; the env goes on with the last good version."""
+    for message in core.watch_messages():
+        warnings.warn(message, UserWarning, stacklevel=3)
 
 
 def observation_box(shape: tuple[int, ...], dtype: str) -> spaces.Box:

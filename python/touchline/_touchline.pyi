@@ -48,9 +48,12 @@ class Env:
         seed: seed of the first episode.
         stacked: stack the last 4 observations along the last axis.
         channel_dimensions: (width, height) of SMM observations.
+        watch: follow the scenario file, its imports and scripts: a change that loads is played
+            from the next reset (`scenario_version` counts them); one that does not is reported
+            by `watch_messages` and the last good version stays.
 
     Raises:
-        ScenarioError: the scenario cannot be loaded.
+        ScenarioError: the scenario cannot be loaded, or `watch` names a stdlib scenario.
         ValueError: bad arguments (unknown representation, too many agents, ...).
     """
 
@@ -66,6 +69,7 @@ class Env:
         seed: int = 0,
         stacked: bool = False,
         channel_dimensions: tuple[int, int] = ...,
+        watch: bool = False,
     ) -> Self: ...
     @property
     def num_controllers(self) -> int: ...
@@ -87,6 +91,13 @@ class Env:
         """The curriculum lesson played, (0-based index, name); None without a curriculum."""
     @property
     def game_duration(self) -> int: ...
+    @property
+    def scenario_version(self) -> int:
+        """The scenario version played: 0 without `watch`; with it 1 for the file as first
+        loaded, then the count of changes that loaded, taken up at a reset."""
+    def watch_messages(self) -> list[str]:
+        """What the watcher reported since the last call (rendered diagnostics of changes that
+        do not load, versions the env refused), oldest first; empty without `watch`."""
     def reset(self, seed: int | None = None) -> Any:
         """Starts an episode; returns the observation (array (M, *shape) or, for raw, a list of dicts)."""
     def step(self, actions: npt.ArrayLike) -> tuple[Any, npt.NDArray[np.float32], bool, bool, dict[str, Any]]:
@@ -97,6 +108,7 @@ class Env:
             score [left, right], steps_left, game_mode, score_reward, checkpoint_reward, event_reward
             (the scenario's `reward on …` terms, summed over controllers), script_reward,
             script_errors, steps, episode, lesson (0-based curriculum lesson, 0 without one),
+            scenario_version,
             lesson_name (with a curriculum), and script_log (lines scripts printed) when not empty.
 
         Raises:
@@ -151,7 +163,10 @@ class VectorEnv:
         stacked: bool = False,
         channel_dimensions: tuple[int, int] = ...,
         autoreset_mode: str = "SameStep",
+        watch: bool = False,
     ) -> Self: ...
+    def watch_messages(self) -> list[str]:
+        """As `Env.watch_messages`, for every match (each message once)."""
     @property
     def num_envs(self) -> int: ...
     @property
@@ -178,7 +193,7 @@ class VectorEnv:
         """
         ...
     def infos(self, current: npt.NDArray[np.float64], finals: npt.NDArray[np.float64]) -> None:
-        """Writes each match's info row (12 float64 columns), now and at its last episode's end."""
+        """Writes each match's info row (13 float64 columns), now and at its last episode's end."""
         ...
     def reset(
         self,

@@ -14,14 +14,15 @@ from ._touchline import Env as _CoreEnv
 
 
 def reset_info(core: _CoreEnv) -> dict[str, Any]:
-    """The info of a reset: `score`, `steps_left`, `game_mode` and `lesson` (with a curriculum also
-    `lesson_name`), as in the info of a step."""
+    """The info of a reset: `score`, `steps_left`, `game_mode`, `lesson` (with a curriculum also
+    `lesson_name`) and `scenario_version`, as in the info of a step."""
     raw = core.raw_observations()[0]
     info: dict[str, Any] = {
         "score": [int(goals) for goals in raw["score"]],
         "steps_left": int(raw["steps_left"]),
         "game_mode": int(raw["game_mode"]),
         "lesson": 0,
+        "scenario_version": core.scenario_version,
     }
     lesson = core.lesson
     if lesson is not None:
@@ -132,6 +133,7 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
         channel_dimensions: tuple[int, int] = (96, 72),
         action_set: str = "default",
         render_mode: str | None = None,
+        watch: bool = False,
     ) -> None:
         _arguments.render_mode_argument(render_mode)
         # Kept to rebuild the env when it is unpickled.
@@ -146,6 +148,7 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
             "channel_dimensions": channel_dimensions,
             "action_set": action_set,
             "render_mode": render_mode,
+            "watch": watch,
         }
         left, right = _arguments.controls_argument(
             number_of_left_players_agent_controls, number_of_right_players_agent_controls
@@ -161,6 +164,7 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
             seed=seed,
             stacked=stacked,
             channel_dimensions=channel_dimensions,
+            watch=watch,
         )
         self.representation = representation
         # A scenario with control_all_players may give the agent more players than asked for.
@@ -229,14 +233,17 @@ class FootballEnv(gymnasium.Env[np.ndarray, Any]):
         """Starts an episode: reseeds when `seed` is given, else plays the current seed's next episode.
 
         `options` is accepted for Gymnasium's API; touchline defines no reset options yet.
-        Returns `(observation, info)`; info has `score`, `steps_left`, `game_mode` and the
-        episode's starting counters.
+        Returns `(observation, info)`; info has `score`, `steps_left`, `game_mode`,
+        `scenario_version` and the episode's starting counters. With `watch=True` the env takes
+        the newest version of its scenario file that loads here, and warns (`UserWarning`, once
+        per failed change) about a change that does not load.
         """
         super().reset(seed=seed)
         if seed is None:
             observation = self._core.reset()
         else:
             observation = self._core.reset(_arguments.checked_seed(seed))
+        _arguments.show_watch_messages(self._core)
         return (observation[0] if self._single else observation), reset_info(self._core)
 
     def step(self, action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:

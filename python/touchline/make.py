@@ -22,6 +22,7 @@ def make(
     channel_dimensions: tuple[int, int] = (96, 72),
     action_set: str = "default",
     render_mode: str | None = None,
+    watch: bool = False,
 ) -> FootballEnv:
     """A `gymnasium.Env` playing `scenario` (a stdlib name, or the path of a `.tl` or compiled `.json`
     scenario file).
@@ -41,10 +42,18 @@ def make(
         action_set: "default" (19 actions) or "v2" (20, adds builtin_ai).
         render_mode: None or "rgb_array": `render()` returns the match drawn from above, a
             (720, 1280, 3) uint8 RGB frame.
+        watch: hot reload. The scenario file (`.tl` or `.json`), its imports and its scripts are
+            watched; a change is compiled in the background and the env plays it from its next
+            `reset()` (never mid-episode). A change that does not load keeps the last good
+            version and warns once (`UserWarning` at the next `reset()`, with the rendered
+            diagnostic). `info["scenario_version"]` says which version an episode plays: 1 for
+            the file as first loaded, then the count of changes that loaded (0 without watch).
 
     Raises:
-        touchline.ScenarioError: the scenario cannot be found or loaded; the message is the
-            rendered diagnostic, with the nearest names for a misspelt one.
+        touchline.ScenarioError: the scenario cannot be found or loaded (with `watch=True` too:
+            the first version must load), or `watch=True` names a stdlib scenario (no file to
+            watch); the message is the rendered diagnostic, with the nearest names for a
+            misspelt one.
         ValueError: a bad argument.
     """
     return FootballEnv(
@@ -58,6 +67,7 @@ def make(
         channel_dimensions=channel_dimensions,
         action_set=action_set,
         render_mode=render_mode,
+        watch=watch,
     )
 
 
@@ -72,11 +82,13 @@ def parallel_env(
     channel_dimensions: tuple[int, int] = (96, 72),
     action_set: str = "default",
     render_mode: str | None = None,
+    watch: bool = False,
 ) -> FootballParallelEnv:
     """A PettingZoo `ParallelEnv` with one agent per controlled player, on one or both teams.
 
     Agents are `left_0 …` and `right_0 …`, each observing in its own frame; controlling players on
-    both sides is self-play. The arguments are those of `make`; see `FootballParallelEnv`.
+    both sides is self-play. The arguments are those of `make` (`watch=True` included: every
+    agent's info carries `scenario_version`); see `FootballParallelEnv`.
     Needs the `pettingzoo` package.
     """
     from .pettingzoo_env import FootballParallelEnv
@@ -92,4 +104,5 @@ def parallel_env(
         channel_dimensions=channel_dimensions,
         action_set=action_set,
         render_mode=render_mode,
+        watch=watch,
     )

@@ -52,6 +52,7 @@ class FootballParallelEnv(ParallelEnv[str, np.ndarray, int]):  # type: ignore[mi
         channel_dimensions: tuple[int, int] = (96, 72),
         action_set: str = "default",
         render_mode: str | None = None,
+        watch: bool = False,
     ) -> None:
         _arguments.render_mode_argument(render_mode)
         left, right = _arguments.controls_argument(
@@ -68,6 +69,7 @@ class FootballParallelEnv(ParallelEnv[str, np.ndarray, int]):  # type: ignore[mi
             seed=seed,
             stacked=stacked,
             channel_dimensions=channel_dimensions,
+            watch=watch,
         )
         self.representation = representation
         sides = list(self._core.controller_sides)
@@ -113,6 +115,7 @@ class FootballParallelEnv(ParallelEnv[str, np.ndarray, int]):  # type: ignore[mi
             observation = self._core.reset()
         else:
             observation = self._core.reset(_arguments.checked_seed(seed))
+        _arguments.show_watch_messages(self._core)
         self.agents = list(self.possible_agents)
         info = reset_info(self._core)
         observations = {agent: observation[i] for i, agent in enumerate(self.agents)}

@@ -72,6 +72,9 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         number_of_left_players_agent_controls, number_of_right_players_agent_controls,
         representation, rewards, stacked, seed, channel_dimensions, action_set: as in
             `touchline.make`. `seed=None` draws a random seed.
+        watch: hot reload, as in `touchline.make`: every match follows the scenario file and
+            takes a change that loads at its next reset (its own, or an autoreset); a change
+            that does not load warns once, at the next `reset` or `step`.
 
     Raises:
         ValueError: a bad argument, the raw representation (it has no array form) or a
@@ -80,7 +83,7 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
     `infos` follows Gymnasium 1.x's vector layout: every key of a single env's info (`score`
     int64 (num_envs, 2) from the left team's view, `steps_left`, `game_mode`, `score_reward`,
     `checkpoint_reward`, `event_reward`, `script_reward`, `script_errors`, `steps`,
-    `episode_index`, `lesson`; one row per entry, repeated across a match's players) with its
+    `episode_index`, `lesson`, `scenario_version`; one row per entry, repeated across a match's players) with its
     mask `_key`.
     """
 
@@ -100,6 +103,7 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP,
         number_of_left_players_agent_controls: int = 1,
         number_of_right_players_agent_controls: int = 0,
+        watch: bool = False,
     ) -> None:
         if render_mode is not None:
             raise ValueError(
@@ -121,6 +125,7 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
             "autoreset_mode": autoreset_mode,
             "number_of_left_players_agent_controls": number_of_left_players_agent_controls,
             "number_of_right_players_agent_controls": number_of_right_players_agent_controls,
+            "watch": watch,
         }
         if (
             isinstance(num_envs, bool)
@@ -153,6 +158,7 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
             stacked=bool(stacked),
             channel_dimensions=_arguments.channel_dimensions_argument(channel_dimensions),
             autoreset_mode=self.autoreset_mode.value,
+            watch=_arguments.watch_argument(watch),
         )
         #: Matches played side by side.
         self.num_matches = int(num_envs)
@@ -221,6 +227,7 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
             entries = np.repeat(matches, self.agents_per_match)
         observations = self._observations.copy() if self.copy else self._observations
         self._core.infos(self._info_rows, self._final_info_rows)
+        _arguments.show_watch_messages(self._core)
         return observations, self._info_dict(self._info_rows, entries)
 
     def _match_mask(self, mask: Any) -> np.ndarray:
@@ -267,6 +274,8 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
             self._final_observations_m,
         )
         infos = self._step_infos()
+        # Matches reset within steps (autoreset): a change that does not load is told here.
+        _arguments.show_watch_messages(self._core)
         terminated, truncated = self._terminated, self._truncated
         if self.agents_per_match > 1:
             terminated = np.repeat(terminated, self.agents_per_match)
@@ -353,6 +362,7 @@ _INFO_SCALARS = (
     ("steps", np.int64),
     ("episode_index", np.int64),
     ("lesson", np.int64),
+    ("scenario_version", np.int64),
 )
 _INFO_COLUMNS = 2 + len(_INFO_SCALARS)
 

@@ -1,6 +1,6 @@
 //! `touchline watch FILE`: play episodes of a scenario file over and over while it is edited.
 //!
-//! The scenario (`.json` now, `.tl` once the language lands) and every script it names are
+//! The scenario (`.tl` or compiled `.json`), its imports and every script it names are
 //! watched ([`touchline_dsl::Watched`]); each change of their content is recompiled at once and
 //! its diagnostics are shown on stderr, once (reading a file or saving it unchanged does nothing);
 //! the next episode plays the new version, or the last good one if the change did not compile. A
@@ -85,7 +85,7 @@ pub(crate) fn run(args: &WatchArgs) -> Result<(), CliError> {
         action_set: args.policy.action_set(),
         checkpoints: false,
     };
-    let mut env = watched.env(config, args.seed).map_err(|source| CliError::Config {
+    let (mut env, playing) = watched.env_playing(config, args.seed).map_err(|source| CliError::Config {
         scenario: args.scenario.clone(),
         help: "pass --left-agents and --right-agents within the scenario's controllable players".into(),
         source,
@@ -103,13 +103,18 @@ pub(crate) fn run(args: &WatchArgs) -> Result<(), CliError> {
             && let Err(e) = env.reset()
         {
             // A script's `reset` failed: this episode is spent; the next reset moves on.
-            writeln!(out, "episode {episode} (version {}): a script failed at reset", watched.generation())?;
-            show_once(&mut shown, watched.generation(), &e.to_string());
+            writeln!(
+                out,
+                "episode {episode} (version {}): a script failed at the episode's reset",
+                playing.generation()
+            )?;
+            show_once(&mut shown, playing.generation(), &e.to_string());
             std::thread::sleep(Duration::from_millis(500));
             episode += 1;
             continue;
         }
-        let generation = watched.generation();
+        // The version this episode plays (taken up at its reset), not the newest compiled.
+        let generation = playing.generation();
         let mut reward = 0.0_f64;
         let failed = loop {
             agent.act(&mut actions);
@@ -135,7 +140,8 @@ pub(crate) fn run(args: &WatchArgs) -> Result<(), CliError> {
                 info.score[0], info.score[1], info.steps, info.script_errors
             )?,
             Some(message) => {
-                writeln!(out, "episode {episode} (version {generation}): a script failed at step {}", info.steps)?;
+                // The step under way when it failed: the script's diagnostic counts the same way.
+                writeln!(out, "episode {episode} (version {generation}): a script failed in step {}", info.steps + 1)?;
                 show_once(&mut shown, generation, &message);
                 // Give the user time to fix it rather than failing thousands of times a second.
                 std::thread::sleep(Duration::from_millis(500));

@@ -62,12 +62,20 @@ impl BallPath {
         let (mut p, mut v) = (ball.position, ball.velocity);
         const SUB: usize = 2;
         let dt = SAMPLE_DT / SUB as f32;
+        // Set once the ball has stopped on the grass: from then on every step leaves it where it
+        // is (speed 0 keeps speed 0, the position gains +0), so the remaining samples are copies.
+        let mut stopped = false;
         for slot in &mut at {
+            if stopped {
+                *slot = p;
+                continue;
+            }
             for _ in 0..SUB {
                 if p.z <= BALL_RADIUS + 0.01 && v.z.abs() < 0.8 {
                     let h = v.truncate();
                     let s = h.length();
                     let kept = rolled_speed(s, dt);
+                    stopped |= kept <= 0.0;
                     let h = if kept <= 0.0 { Vec2::ZERO } else { h * (kept / s) };
                     v = h.extend(0.0);
                     p.z = BALL_RADIUS;

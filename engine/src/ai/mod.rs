@@ -130,6 +130,9 @@ pub struct Analysis {
     pub second: Option<usize>,
     /// The opponents' fastest time to the ball (s).
     pub opponent_time: f32,
+    /// The line this team's runners keep behind ([`MatchView::defensive_line`]), worked out once
+    /// per decision rather than once per player placed in the shape.
+    pub defensive_line: f32,
 }
 
 /// One team's built-in AI.
@@ -308,7 +311,7 @@ impl TeamAi {
             } else if let Some(plan) = pressing::plan(view, g, &analysis, difficulty, self.marks[i].is_some()) {
                 Plan { slide: sliding::should_slide(view, g), ..plan }
             } else {
-                let target = team_shape::position(view, g, analysis.frame, difficulty, self.marks[i]);
+                let target = team_shape::position(view, g, &analysis, difficulty, self.marks[i]);
                 // Anyone the carrier runs past may slide in (GRF's sliding command is every
                 // AI player's, not the hunter's alone).
                 let slide = sliding::should_slide(view, g);

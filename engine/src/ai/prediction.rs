@@ -166,7 +166,14 @@ pub fn analyse(view: &MatchView, side: Side, _difficulty: &Difficulty) -> Analys
             opponent_time = opponent_time.min(path.intercept(p.position, p.max_speed * 0.9, 1.0).0);
         }
     }
-    Analysis { frame: TeamFrame::of(side), path, chaser: best, second: second.map(|s| s.0), opponent_time }
+    Analysis {
+        frame: TeamFrame::of(side),
+        path,
+        chaser: best,
+        second: second.map(|s| s.0),
+        opponent_time,
+        defensive_line: view.defensive_line(side),
+    }
 }
 
 #[cfg(test)]

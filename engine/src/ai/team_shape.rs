@@ -4,7 +4,7 @@
 
 use glam::Vec2;
 
-use super::{Difficulty, MatchView, marking};
+use super::{Analysis, Difficulty, MatchView, marking};
 use crate::geometry::TeamFrame;
 use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 use crate::player::Role;
@@ -27,7 +27,8 @@ pub fn onside_margin(theta: f32) -> f32 {
 /// possession make runs towards goal ahead of the ball, but stay onside; defending players mark an
 /// opponent in their zone, goal-side of him, more tightly at higher θ; a player the team's man
 /// marking gave a man (`man`, global index) marks him instead ([`marking::position`]).
-pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Difficulty, man: Option<usize>) -> Vec2 {
+pub fn position(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, man: Option<usize>) -> Vec2 {
+    let frame = analysis.frame;
     let p = &view.players[g];
     let ball = frame.vec2(view.ball.xy());
     let ours = match view.owner {
@@ -67,7 +68,7 @@ pub fn position(view: &MatchView, g: usize, frame: TeamFrame, difficulty: &Diffi
     }
     if ours && view.owner != Some(g) {
         // Stay onside: the offside line, less a margin that shrinks with θ.
-        x = x.min(view.defensive_line(p.side) - onside_margin(difficulty.theta));
+        x = x.min(analysis.defensive_line - onside_margin(difficulty.theta));
     }
     if !ours && (p.role.is_defender() || x < ball.x) {
         // The back line stays goal-side of the ball, and anyone goal-side of it stays four metres

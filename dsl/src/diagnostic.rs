@@ -43,6 +43,8 @@ pub enum Code {
     /// The scenario file itself cannot be read: missing, not a regular file, over 64 MiB, or not
     /// UTF-8 text.
     UnreadableSource,
+    /// Relative places that depend on each other in a circle (`a at b`, `b at a`).
+    PlacementCycle,
     /// A `require` constraint that can never hold, or too rarely for the retry budget.
     Unsatisfiable,
     /// `extends` names no known preset or scenario.
@@ -130,11 +132,14 @@ pub enum Code {
     /// Warning: a behaviour stage after one that never ends (a behaviour that never finishes,
     /// without an `until` that can hold), so it is never reached.
     UnreachableStage,
+    /// Warning: a parameter holding a distribution used more than once (each use is drawn on its
+    /// own).
+    RepeatedDraw,
 }
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 51] = [
+    pub const ALL: [Code; 53] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -181,11 +186,13 @@ impl Code {
         Code::TooDeep,
         Code::RewardTooLarge,
         Code::UnreadableSource,
+        Code::PlacementCycle,
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
         Code::NoEffect,
         Code::UnreachableStage,
+        Code::RepeatedDraw,
     ];
 
     /// The code as shown: `tl::E100` … `tl::W102`.
@@ -237,11 +244,13 @@ impl Code {
             Code::TooDeep => "tl::E148",
             Code::RewardTooLarge => "tl::E149",
             Code::UnreadableSource => "tl::E150",
+            Code::PlacementCycle => "tl::E151",
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",
             Code::NoEffect => "tl::W103",
             Code::UnreachableStage => "tl::W104",
+            Code::RepeatedDraw => "tl::W105",
         }
     }
 

@@ -5,7 +5,7 @@
 use std::fmt::Write;
 
 use touchline_engine::scenario::{
-    Behaviour, Comparison, Condition, Criterion, Distribution, EndCondition, EventAtom, EventKind, EventReward,
+    Behaviour, Body, Comparison, Condition, Criterion, Distribution, EndCondition, EventAtom, EventKind, EventReward,
     EventStep, EventTeam, Owner, PassKind, Region, Require, RewardKind, Sample, Spot, Stage, Target,
 };
 use touchline_engine::{GameMode, PlayerEntry, Scenario, Side};
@@ -317,6 +317,19 @@ fn place(nominal: [f32; 2], random: Option<&Spot>) -> String {
             "at choice[{}]",
             points.iter().map(|[x, y]| format!("({}, {})", number(*x), number(*y))).collect::<Vec<_>>().join(", ")
         ),
+        Some(Spot::Relative(a)) => {
+            let of = match a.of {
+                Body::Ball => "ball".to_owned(),
+                Body::Left(i) => format!("left[{i}]"),
+                Body::Right(i) => format!("right[{i}]"),
+            };
+            let at = if a.offset == [0.0, 0.0] {
+                of
+            } else {
+                format!("{of} + ({} m, {} m)", number(a.offset[0]), number(a.offset[1]))
+            };
+            if a.radius > 0.0 { format!("at near({at}, {} m)", number(a.radius)) } else { format!("at {at}") }
+        }
     }
 }
 

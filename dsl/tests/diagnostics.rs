@@ -179,6 +179,10 @@ fixtures! {
     reward_weight_too_large
     unreadable_source
     non_ascii_name
+    placement_cycle
+    relative_to_the_ball
+    relative_unknown_player
+    param_drawn_twice
 }
 
 #[test]

@@ -47,6 +47,8 @@ struct Deferred<'d> {
     statements: Vec<(&'d Expr, &'d syntax::Behaviour)>,
     /// `end when` conditions of the condition language: (index in `end_when`, condition).
     ends: Vec<(usize, &'d Condition)>,
+    /// Places relative to another body (`at left.CF + (-5 m, 0)`), read once the teams are set.
+    places: Vec<super::relative::Deferred<'d>>,
 }
 
 /// The configuration keys and what they hold.
@@ -122,7 +124,14 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
         match &st.kind {
             StatementKind::Extends(_) => {}
             StatementKind::Setting { key, value } => setting(s, key, value, r),
+            StatementKind::Ball(place) if super::relative::is_relative(place) => {
+                let syntax::Place::At(expr) = place else { continue };
+                deferred.places.retain(|d| d.target != super::relative::Target::Ball);
+                deferred.places.push(super::relative::Deferred { target: super::relative::Target::Ball, expr });
+                origins.ball = Some(Loc { source: r.source.clone(), span: st.span });
+            }
             StatementKind::Ball(place) => {
+                deferred.places.retain(|d| d.target != super::relative::Target::Ball);
                 if let Some((nominal, random)) = r.place(place, Frame::Ball) {
                     s.ball_position = nominal;
                     s.ball_random = random;
@@ -175,8 +184,9 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             | StatementKind::Advance(_) => {}
         }
     }
-    // Behaviours, conditions and requires name players, so they are read once this body's teams
-    // are in place.
+    // Behaviours, conditions, requires and relative places name players, so they are read once
+    // this body's teams are in place.
+    super::relative::resolve(&deferred.places, s, r);
     behaviours(&deferred, s, r);
     for &(k, c) in &deferred.ends {
         if let Some(c) = condition::condition(c, Context::End, s, r) {
@@ -365,8 +375,16 @@ fn team<'d>(
                 help,
             );
         }
-        let place = r.place(&p.place, Frame::Player);
+        let relative = super::relative::is_relative(&p.place);
+        let place = if relative { Some(([0.0, 0.0], None)) } else { r.place(&p.place, Frame::Player) };
         let (Some(role), Some((nominal, random))) = (role, place) else { continue };
+        if let (true, syntax::Place::At(expr)) = (relative, &p.place) {
+            let target = match side {
+                syntax::Side::Left => super::relative::Target::Left(entries.len()),
+                syntax::Side::Right => super::relative::Target::Right(entries.len()),
+            };
+            deferred.places.push(super::relative::Deferred { target, expr });
+        }
         let mut e = PlayerEntry::new(role, nominal[0], nominal[1]);
         e.random = random;
         for f in &p.flags {
@@ -512,7 +530,7 @@ fn require(lhs: &Expr, at_least: bool, rhs: &Expr, s: &Scenario, r: &mut Reader<
 }
 
 /// `ball`, `left[i]`, `right[i]`, `left.ROLE` (the only player of that role).
-fn body(e: &Expr, s: &Scenario, r: &mut Reader<'_>) -> Option<Body> {
+pub(crate) fn body(e: &Expr, s: &Scenario, r: &mut Reader<'_>) -> Option<Body> {
     match &e.kind {
         ExprKind::Path { head, field: None } if head.value == "ball" => Some(Body::Ball),
         ExprKind::Index { name, .. } | ExprKind::Path { head: name, field: Some(_) }

@@ -11,6 +11,7 @@ mod curriculum;
 mod events;
 mod params;
 mod pitch;
+mod relative;
 mod value;
 
 use std::collections::HashMap;
@@ -465,6 +466,7 @@ impl Compiler {
         self.assign_params(&mut env, &assigned, &down, &source, None);
         let mut reader = Reader::new(&source, &mut self.diags, &env);
         body::apply(&d, &mut scenario, &mut origins, &mut reader);
+        reader.warn_repeated_draws();
         scenario.name = d.name.value.clone();
         scenario.description = description(&d.docs);
         let result = parent_ok.then_some((scenario, origins, env));

@@ -6,7 +6,7 @@
 //! a region or a distribution works too). Parameters bind late: a parent's `CB at (gap, 0)` sees
 //! the value a child or a lesson gives `gap`.
 
-use crate::diagnostic::Source;
+use crate::diagnostic::{Code, Source};
 use crate::syntax::{Expr, Span, Statement, StatementKind};
 
 /// One parameter's current value.
@@ -76,4 +76,31 @@ pub(crate) fn of_statements(statements: &[Statement], source: &Source) -> (Vec<P
         list.push(Param { name: name.value.clone(), value: value.clone(), source: source.clone(), span: name.span });
     }
     (declared, assigned)
+}
+
+impl super::value::Reader<'_> {
+    /// `tl::W105` at the second and later uses of a parameter holding a distribution: every use
+    /// is an independent draw, which surprises a reader who meant to tie two positions together.
+    pub(crate) fn warn_repeated_draws(&mut self) {
+        for (k, (name, span)) in self.random_uses.iter().enumerate() {
+            let Some((_, first)) = self.random_uses[..k].iter().find(|(n, _)| n == name) else { continue };
+            if self.random_uses[..k].iter().filter(|(n, _)| n == name).count() > 1 {
+                continue;
+            }
+            self.diags.push(
+                crate::diagnostic::Diagnostic::new(
+                    Code::RepeatedDraw,
+                    format!("param `{name}` holds a distribution, drawn again at this use"),
+                    self.source,
+                    *span,
+                    "an independent draw",
+                )
+                .with_label(*first, "drawn here too")
+                .with_help(
+                    "each use of a distribution param is drawn on its own at every reset; to tie two places \
+                     together, place one relative to the other (`at left.CF + (5 m, 0)`, grammar/README.md)",
+                ),
+            );
+        }
+    }
 }

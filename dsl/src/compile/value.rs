@@ -68,12 +68,15 @@ pub(crate) struct Reader<'a> {
     /// The parameters being read now, innermost last (a parameter whose value names itself,
     /// directly or not, is an error rather than endless recursion).
     pub(crate) expanding: Vec<String>,
+    /// Uses of parameters whose value is a distribution, in this source: each use is drawn on its
+    /// own, which [`Reader::warn_repeated_draws`] points out.
+    pub(crate) random_uses: Vec<(String, Span)>,
 }
 
 impl<'a> Reader<'a> {
     /// A reader of `source` with the parameters `params`.
     pub(crate) fn new(source: &'a Source, diags: &'a mut Diagnostics, params: &'a Params) -> Reader<'a> {
-        Reader { source, diags, params, expanding: Vec::new() }
+        Reader { source, diags, params, expanding: Vec::new(), random_uses: Vec::new() }
     }
 
     /// When `e` names a parameter, reads its value with `read` and returns `Some(result)`;
@@ -107,6 +110,11 @@ impl<'a> Reader<'a> {
                 "a param defined through another param …",
             ));
             return Some(None);
+        }
+        let random = matches!(&param.value.kind, ExprKind::Call { name, .. } if matches!(name.value.as_str(), "uniform" | "normal"))
+            || matches!(&param.value.kind, ExprKind::Index { name, .. } if name.value == "choice");
+        if random && self.expanding.is_empty() {
+            self.random_uses.push((param.name.clone(), e.span));
         }
         let before = self.diags.items.len();
         let use_source: &'a Source = self.source;

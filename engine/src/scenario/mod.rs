@@ -21,7 +21,7 @@ pub use behaviour::{Behaviour, PassKind, Stage};
 pub use condition::{Comparison, Condition, Owner, Target};
 pub use curriculum::{Criterion, Curriculum, EpisodeResult, Lesson, Metric, Threshold};
 pub use event_reward::{EventAtom, EventKind, EventReward, EventStep, EventTeam, MAX_EVENT_GROUP, MAX_EVENT_SEQUENCE};
-pub use placement::{Body, MAX_PLACEMENT_TRIES, Placement, Require};
+pub use placement::{Anchor, Body, MAX_PLACEMENT_TRIES, Placement, Require, relative_cycle};
 pub use random::{Distribution, PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Region, Sample, Spot};
 pub use terms::{EndCondition, RewardKind, RewardTerm};
 
@@ -279,6 +279,22 @@ impl Scenario {
                         .map_err(|reason| EngineError::InvalidScenario { reason })?;
                 }
             }
+        }
+        let spots = self.left_team.iter().chain(&self.right_team).filter_map(|p| p.random.as_ref());
+        for spot in spots.chain(self.ball_random.as_ref()) {
+            if let Spot::Relative(anchor) = spot {
+                let exists = match anchor.of {
+                    Body::Ball => true,
+                    Body::Left(i) => i < self.left_team.len(),
+                    Body::Right(i) => i < self.right_team.len(),
+                };
+                if !exists {
+                    return bad(format!("a relative spot names {:?}, which does not exist", anchor.of));
+                }
+            }
+        }
+        if let Some(cycle) = relative_cycle(&self.left_team, &self.right_team, self.ball_random.as_ref()) {
+            return bad(format!("relative spots place each other in a circle: {cycle:?}"));
         }
         for r in &self.requires {
             let (Require::MinDistance { a, b, metres } | Require::MaxDistance { a, b, metres }) = r;

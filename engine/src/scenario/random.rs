@@ -6,6 +6,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::placement::Anchor;
 use crate::rng::MatchRng;
 
 /// The pitch lines in normalised units: |x| ≤ 1, |y| ≤ 0.42 (grf.md §7.4). Normal draws are clipped
@@ -63,8 +64,8 @@ pub enum Region {
 
 /// Where a randomised player or ball starts.
 ///
-/// JSON: `{"point": {"x": <Sample>, "y": <Sample>}}`, `{"in": <Region>}` or
-/// `{"one_of": [[x, y], …]}`.
+/// JSON: `{"point": {"x": <Sample>, "y": <Sample>}}`, `{"in": <Region>}`,
+/// `{"one_of": [[x, y], …]}` or `{"relative": {"of": <Body>, "offset": [dx, dy], "radius": r}}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum Spot {
@@ -79,6 +80,9 @@ pub enum Spot {
     In(Region),
     /// One of the points, each equally likely.
     OneOf(Vec<[f32; 2]>),
+    /// A point taken from another body's position in the same draw (see [`Anchor`]); placed by
+    /// [`Scenario::draw`](super::Scenario::draw) after that body.
+    Relative(Anchor),
 }
 
 impl Sample {
@@ -205,6 +209,8 @@ impl Spot {
             Spot::Point { x, y } => [x.draw(rng, PITCH_HALF_LENGTH), y.draw(rng, PITCH_HALF_WIDTH)],
             Spot::In(region) => region.draw(rng),
             Spot::OneOf(points) => points[pick(rng, points.len())],
+            // Placed by `Scenario::draw`, which knows where the anchor was drawn.
+            Spot::Relative(_) => self.nominal(),
         }
     }
 
@@ -214,6 +220,8 @@ impl Spot {
             Spot::Point { x, y } => [x.nominal(), y.nominal()],
             Spot::In(region) => region.centre(),
             Spot::OneOf(points) => points.first().copied().unwrap_or([0.0, 0.0]),
+            // Known only with the anchor's position: the entry's own x, y hold it.
+            Spot::Relative(_) => [0.0, 0.0],
         }
     }
 
@@ -228,6 +236,8 @@ impl Spot {
                 [clip(x.bounds(), PITCH_HALF_LENGTH, is_normal(x)), clip(y.bounds(), PITCH_HALF_WIDTH, is_normal(y))]
             }
             Spot::In(region) => region.bounds(),
+            // A relative point is moved onto the pitch when it falls outside the lines.
+            Spot::Relative(_) => [[-PITCH_HALF_LENGTH, PITCH_HALF_LENGTH], [-PITCH_HALF_WIDTH, PITCH_HALF_WIDTH]],
             Spot::OneOf(points) => points.iter().fold(
                 [[f32::INFINITY, f32::NEG_INFINITY], [f32::INFINITY, f32::NEG_INFINITY]],
                 |[[x0, x1], [y0, y1]], [x, y]| [[x0.min(*x), x1.max(*x)], [y0.min(*y), y1.max(*y)]],
@@ -245,6 +255,7 @@ impl Spot {
                 Err("one_of needs finite points".into())
             }
             Spot::OneOf(_) => Ok(()),
+            Spot::Relative(anchor) => anchor.check(),
         }
     }
 }

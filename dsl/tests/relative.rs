@@ -1,0 +1,98 @@
+//! Relative placement (issue 18, item 1): the example drills start where they say, at every
+//! reset, and the places compile to anchors the engine draws in dependency order.
+
+use std::path::Path;
+
+use touchline_dsl::{build_env, compile, compile_file};
+use touchline_engine::scenario::{Anchor, Body, Spot};
+use touchline_engine::{Action, Env, EnvConfig};
+
+/// Metres between two points of one observation (GRF's observation units: 54.4 m along, 83.6 m across).
+fn metres(a: [f32; 2], b: [f32; 2]) -> (f32, f32) {
+    ((b[0] - a[0]) * 54.4, (b[1] - a[1]) * 83.6)
+}
+
+fn example(name: &str) -> Env {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenarios").join(name);
+    let compiled = compile_file(&path).unwrap_or_else(|d| panic!("{}", d.render_plain()));
+    assert!(compiled.warnings.items.is_empty(), "{}", compiled.warnings.render_plain());
+    build_env(compiled.scenario, path.parent().unwrap(), EnvConfig::default(), 7).unwrap()
+}
+
+/// A player's observed position in his team's scenario units (players are placed at 55 m and
+/// 84.96 m per unit).
+fn scenario_units(p: [f32; 2]) -> [f32; 2] {
+    [p[0] * 54.4 / 55.0, p[1] * 83.6 / 84.96]
+}
+
+/// Plays `episodes` episodes (a few idle steps each), calling `check` on the left team's view
+/// of each reset.
+fn each_reset(env: &mut Env, episodes: usize, mut check: impl FnMut(&touchline_engine::RawObservation)) {
+    for episode in 0..episodes {
+        if episode > 0 {
+            env.reset().unwrap();
+        }
+        check(&env.observations()[0]);
+        for _ in 0..3 {
+            env.step(&[Action::Idle]).unwrap();
+        }
+    }
+}
+
+#[test]
+fn the_winger_has_the_ball_at_his_feet_wherever_he_starts() {
+    let mut env = example("winger_with_the_ball.tl");
+    let mut spots = Vec::new();
+    each_reset(&mut env, 200, |o| {
+        let lm = o.left_team[1];
+        let [x, y] = scenario_units(lm);
+        assert!((0.2..=0.6).contains(&x) && (-0.38..=-0.2).contains(&y), "LM at {lm:?}");
+        let (dx, dy) = metres(lm, [o.ball[0], o.ball[1]]);
+        assert!((dx - 1.0).abs() < 0.02 && dy.abs() < 0.02, "the ball {dx} m, {dy} m from him");
+        // The right team's LB, 6 m goal-side of him (the right team's view is turned: index 1).
+        let lb = o.right_team[1];
+        let (dx, dy) = metres(lm, lb);
+        assert!((dx - 6.0).abs() < 0.02 && dy.abs() < 0.02, "the LB {dx} m, {dy} m from him");
+        spots.push(lm);
+    });
+    spots.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    spots.dedup();
+    assert!(spots.len() > 150, "drawn anew at every reset");
+}
+
+#[test]
+fn the_defender_starts_five_metres_behind_the_attacker() {
+    let mut env = example("defender_behind_attacker.tl");
+    each_reset(&mut env, 200, |o| {
+        let cf = o.left_team[1];
+        let [x, y] = scenario_units(cf);
+        assert!((0.05..=0.6).contains(&x) && (-0.3..=0.3).contains(&y), "CF at {cf:?}");
+        let (dx, dy) = metres(cf, o.right_team[1]);
+        assert!((dx + 5.0).abs() < 0.02 && dy.abs() < 0.02, "the CB {dx} m, {dy} m from him");
+    });
+}
+
+#[test]
+fn places_compile_to_anchors_in_the_named_players_frame() {
+    let text = "scenario s {\n  extends academy\n  ball at left.CF + (2 m, -1 m)\n  team left {\n    GK at (-1, 0)\n    CF at (0.5, 0.1)\n  }\n  team right {\n    GK at (-1, 0)\n    CB at near(left.CF, 3 m)\n    CM at beside(right.CB, -4 m)\n    LB at left[1] - (0.1, 0)\n  }\n}\n";
+    let s = compile(text, "s.tl").unwrap_or_else(|d| panic!("{}", d.render_plain())).scenario;
+    let anchor = |spot: &Option<Spot>| match spot {
+        Some(Spot::Relative(a)) => a.clone(),
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(anchor(&s.ball_random), Anchor { of: Body::Left(1), offset: [2.0, -1.0], radius: 0.0 });
+    assert_eq!(anchor(&s.right_team[1].random), Anchor { of: Body::Left(1), offset: [0.0, 0.0], radius: 3.0 });
+    assert_eq!(anchor(&s.right_team[2].random), Anchor { of: Body::Right(1), offset: [0.0, -4.0], radius: 0.0 });
+    // Scenario units of the placed player: 0.1 × 55 m.
+    let lb = anchor(&s.right_team[3].random);
+    assert!((lb.offset[0] + 5.5).abs() < 1e-4 && lb.offset[1] == 0.0, "{lb:?}");
+    // Nominal points: the ball 2 m along and 1 m across from the CF's (0.5, 0.1).
+    let [bx, by] = s.ball_position;
+    assert!((bx * 54.4 - (0.5 * 55.0 + 2.0)).abs() < 1e-3 && (by * 83.6 - (0.1 * 84.96 - 1.0)).abs() < 1e-3);
+    // Through JSON and back to `.tl`, the same scenario.
+    let json = serde_json::to_string(&s).unwrap();
+    assert_eq!(touchline_dsl::load_json(&json, "s.json").unwrap(), s);
+    let again = compile(&touchline_dsl::scenario_to_tl(&s), "again.tl").unwrap().scenario;
+    assert_eq!(again.ball_random, s.ball_random);
+    assert_eq!(again.right_team, s.right_team);
+}

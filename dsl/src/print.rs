@@ -336,6 +336,8 @@ fn place(nominal: [f32; 2], random: Option<&Spot>) -> String {
 fn sample(s: &Sample) -> String {
     match s {
         Sample::Fixed(v) => number(*v),
+        // The printed text draws it on its own: a shared draw keeps its key only in JSON.
+        Sample::Shared(shared) => sample(&Sample::Random(shared.of.clone())),
         Sample::Random(Distribution::Uniform(a, b)) => format!("uniform({}, {})", number(*a), number(*b)),
         Sample::Random(Distribution::Normal(m, sd)) => format!("normal({}, {})", number(*m), number(*sd)),
         Sample::Random(Distribution::Choice(vs)) => {

@@ -182,7 +182,7 @@ fixtures! {
     placement_cycle
     relative_to_the_ball
     relative_unknown_player
-    param_drawn_twice
+    param_on_both_axes
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! through `extends`.
 
 use touchline_dsl::compile;
-use touchline_engine::scenario::{Distribution, Region, Sample, Spot};
+use touchline_engine::scenario::{Distribution, Region, Sample, Shared, Spot};
 
 fn scenario(text: &str) -> touchline_engine::Scenario {
     compile(text, "params.tl").unwrap_or_else(|d| panic!("{}", d.render_plain())).scenario
@@ -35,7 +35,7 @@ fn a_param_can_be_a_point_a_distribution_or_a_region() {
     assert_eq!(s.ball_position, [0.5, 0.1]);
     assert!(matches!(
         s.left_team[1].random,
-        Some(Spot::Point { y: Sample::Random(Distribution::Uniform(a, b)), .. }) if a == -0.1 && b == 0.1
+        Some(Spot::Point { y: Sample::Shared(Shared { of: Distribution::Uniform(a, b), .. }), .. }) if a == -0.1 && b == 0.1
     ));
     assert!(matches!(s.right_team[1].random, Some(Spot::In(Region::Circle { .. }))));
 }

@@ -96,3 +96,41 @@ fn places_compile_to_anchors_in_the_named_players_frame() {
     assert_eq!(again.ball_random, s.ball_random);
     assert_eq!(again.right_team, s.right_team);
 }
+
+/// A param holding a distribution is drawn once per reset: its uses share the draw, in each one's
+/// units (issue 18, item 1).
+#[test]
+fn a_distribution_param_is_drawn_once_per_reset() {
+    let text = "scenario s {\n  extends academy\n  param height = uniform(-0.3, 0.3)\n  param dx = uniform(-5 m, 5 m)\n  ball at (dx, 0)\n  team left {\n    GK at (-1, 0)\n    CF at (0.5, height)\n    LM at (0.3, height)\n    RM at (dx, 0.2)\n  }\n  team right { GK at (-1, 0) }\n}\n";
+    let compiled = compile(text, "s.tl").unwrap_or_else(|d| panic!("{}", d.render_plain()));
+    assert!(compiled.warnings.items.is_empty(), "{}", compiled.warnings.render_plain());
+    let s = compiled.scenario;
+    let mut heights = Vec::new();
+    for episode in 0..100 {
+        let p = s.draw(1, episode);
+        assert_eq!(p.left[1].y, p.left[2].y, "episode {episode}: both forwards share the draw");
+        // The same metres for the ball (54.4 m a unit) and the RM (55 m a unit).
+        assert!((p.ball[0] * 54.4 - p.left[3].x * 55.0).abs() < 1e-3, "episode {episode}");
+        heights.push(p.left[1].y);
+    }
+    heights.sort_by(f32::total_cmp);
+    heights.dedup();
+    assert!(heights.len() > 90, "drawn anew at every reset: {heights:?}");
+    // Written out twice, a distribution is drawn twice.
+    let twice = text
+        .replace("(0.5, height)", "(0.5, uniform(-0.3, 0.3))")
+        .replace("(0.3, height)", "(0.3, uniform(-0.3, 0.3))");
+    let s = compile(&twice, "s.tl").unwrap().scenario;
+    assert!((0..20).any(|e| {
+        let p = s.draw(1, e);
+        p.left[1].y != p.left[2].y
+    }));
+    // Through JSON, the sharing stays.
+    let json = serde_json::to_string(&compiled_again(text)).unwrap();
+    assert!(json.contains("\"shared\""), "{json}");
+}
+
+fn compiled_again(text: &str) -> touchline_engine::Scenario {
+    let s = compile(text, "s.tl").unwrap().scenario;
+    touchline_dsl::load_json(&serde_json::to_string(&s).unwrap(), "s.json").unwrap()
+}

@@ -79,26 +79,35 @@ pub(crate) fn of_statements(statements: &[Statement], source: &Source) -> (Vec<P
 }
 
 impl super::value::Reader<'_> {
-    /// `tl::W105` at the second and later uses of a parameter holding a distribution: every use
-    /// is an independent draw, which surprises a reader who meant to tie two positions together.
+    /// `tl::W105` where a parameter holding a distribution gives a value for both axes: its uses
+    /// share one draw per reset, so x and y move together, which is seldom meant.
     pub(crate) fn warn_repeated_draws(&mut self) {
-        for (k, (name, span)) in self.random_uses.iter().enumerate() {
-            let Some((_, first)) = self.random_uses[..k].iter().find(|(n, _)| n == name) else { continue };
-            if self.random_uses[..k].iter().filter(|(n, _)| n == name).count() > 1 {
+        use super::value::Axis;
+        let mut warned: Vec<&str> = Vec::new();
+        let mut found = Vec::new();
+        for (name, span, axis) in &self.random_uses {
+            if warned.contains(&name.as_str()) {
                 continue;
             }
+            let other = self.random_uses.iter().find(|(n, _, a)| n == name && a != axis);
+            if let (Some((_, first, _)), Axis::Y) = (other, axis) {
+                warned.push(name);
+                found.push((name.clone(), *span, *first));
+            }
+        }
+        for (name, span, first) in found {
             self.diags.push(
                 crate::diagnostic::Diagnostic::new(
                     Code::RepeatedDraw,
-                    format!("param `{name}` holds a distribution, drawn again at this use"),
+                    format!("param `{name}` is drawn once per reset and used for both x and y"),
                     self.source,
-                    *span,
-                    "an independent draw",
+                    span,
+                    "the same draw as a y",
                 )
-                .with_label(*first, "drawn here too")
+                .with_label(first, "and as an x")
                 .with_help(
-                    "each use of a distribution param is drawn on its own at every reset; to tie two places \
-                     together, place one relative to the other (`at left.CF + (5 m, 0)`, grammar/README.md)",
+                    "every use of a distribution param shares one draw per reset, so these coordinates move \
+                     together; give each axis its own param if they should not",
                 ),
             );
         }

@@ -2,7 +2,7 @@
 //! distributions, points and regions. Each reader pushes a diagnostic and returns `None` when the
 //! expression does not fit.
 
-use touchline_engine::scenario::{Distribution, Region, Sample, Spot};
+use touchline_engine::scenario::{Distribution, Region, Sample, Shared, Spot};
 
 use super::params::Params;
 use super::pitch::{self, BALL_X_METRES, BALL_Y_METRES, PLAYER_X_METRES, PLAYER_Y_METRES};
@@ -68,9 +68,9 @@ pub(crate) struct Reader<'a> {
     /// The parameters being read now, innermost last (a parameter whose value names itself,
     /// directly or not, is an error rather than endless recursion).
     pub(crate) expanding: Vec<String>,
-    /// Uses of parameters whose value is a distribution, in this source: each use is drawn on its
-    /// own, which [`Reader::warn_repeated_draws`] points out.
-    pub(crate) random_uses: Vec<(String, Span)>,
+    /// Uses of parameters whose value is a distribution, in this source, with the axis each
+    /// gives a value for ([`Reader::warn_repeated_draws`]).
+    pub(crate) random_uses: Vec<(String, Span, Axis)>,
 }
 
 impl<'a> Reader<'a> {
@@ -110,11 +110,6 @@ impl<'a> Reader<'a> {
                 "a param defined through another param …",
             ));
             return Some(None);
-        }
-        let random = matches!(&param.value.kind, ExprKind::Call { name, .. } if matches!(name.value.as_str(), "uniform" | "normal"))
-            || matches!(&param.value.kind, ExprKind::Index { name, .. } if name.value == "choice");
-        if random && self.expanding.is_empty() {
-            self.random_uses.push((param.name.clone(), e.span));
         }
         let before = self.diags.items.len();
         let use_source: &'a Source = self.source;
@@ -444,8 +439,25 @@ impl<'a> Reader<'a> {
 
     /// A coordinate: a number, `uniform(a, b)`, `normal(mean, std)` or `choice[a, b, …]`.
     pub(crate) fn sample(&mut self, e: &Expr, frame: Frame, axis: Axis) -> Option<Sample> {
+        // A param holding a distribution is drawn once per reset: its uses share the draw.
+        let shared = match &e.kind {
+            ExprKind::Path { head, field: None } => {
+                self.params.get(&head.value).filter(|p| is_distribution(&p.value)).map(|p| p.name.clone())
+            }
+            _ => None,
+        };
+        if let Some(name) = &shared
+            && self.expanding.is_empty()
+        {
+            self.random_uses.push((name.clone(), e.span, axis));
+        }
         if let Some(result) = self.through_param(e, |r, v| r.sample(v, frame, axis)) {
-            return result;
+            return match (result, shared) {
+                (Some(Sample::Random(of)), Some(name)) => {
+                    Some(Sample::Shared(Shared { shared: shared_key(&name), of }))
+                }
+                (result, _) => result,
+            };
         }
         match &e.kind {
             ExprKind::Call { name, args } => {
@@ -634,7 +646,7 @@ impl<'a> Reader<'a> {
                     let y = self.sample(&args[1].value, frame, Axis::Y);
                     let (x, y) = (x?, y?);
                     let nominal = [x.nominal(), y.nominal()];
-                    let random = matches!((&x, &y), (Sample::Random(_), _) | (_, Sample::Random(_)));
+                    let random = !matches!((&x, &y), (Sample::Fixed(_), Sample::Fixed(_)));
                     Some((nominal, random.then_some(Spot::Point { x, y })))
                 }
                 ExprKind::Index { name, args } if name.value == "choice" => {
@@ -681,6 +693,18 @@ impl Reader<'_> {
             "write a point as `(x, y)`: positions are on the ground, so there is no height",
         );
     }
+}
+
+/// Whether a param's value is a distribution (`uniform(…)`, `normal(…)`, `choice[…]`).
+fn is_distribution(value: &Expr) -> bool {
+    matches!(&value.kind, ExprKind::Call { name, .. } if matches!(name.value.as_str(), "uniform" | "normal"))
+        || matches!(&value.kind, ExprKind::Index { name, .. } if name.value == "choice")
+}
+
+/// The key of a param's shared draw: a hash of its name (FNV-1a), the same in every body and
+/// lesson, so that a parent's uses and a child's share it.
+fn shared_key(name: &str) -> u32 {
+    name.bytes().fold(0x811c_9dc5_u32, |h, b| (h ^ u32::from(b)).wrapping_mul(0x0100_0193))
 }
 
 /// Names that are values of their own (`true`, regions, rewards, conditions), never reported as

@@ -22,7 +22,7 @@ pub use condition::{Comparison, Condition, Owner, Target};
 pub use curriculum::{Criterion, Curriculum, EpisodeResult, Lesson, Metric, Threshold};
 pub use event_reward::{EventAtom, EventKind, EventReward, EventStep, EventTeam, MAX_EVENT_GROUP, MAX_EVENT_SEQUENCE};
 pub use placement::{Anchor, Body, MAX_PLACEMENT_TRIES, Placement, Require, relative_cycle};
-pub use random::{Distribution, PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Region, Sample, Spot};
+pub use random::{Distribution, PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Region, Sample, Shared, Spot};
 pub use terms::{EndCondition, RewardKind, RewardTerm};
 
 pub use crate::player::MAX_PLAYERS_PER_TEAM;

@@ -5,7 +5,7 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use super::random::{PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Spot};
+use super::random::{PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, SharedDraws, Spot};
 use super::{PlayerEntry, Scenario};
 use crate::geometry::Side;
 use crate::geometry::TeamFrame;
@@ -290,19 +290,21 @@ fn fill(
     rng: &mut MatchRng,
 ) {
     let mut pending: Vec<(Body, &Anchor)> = Vec::new();
+    // Shared draws (a `param` holding a distribution) are drawn afresh for every placement.
+    let mut shared = SharedDraws::new();
     let teams = [(left, &mut p.left, Body::Left as fn(usize) -> Body), (right, &mut p.right, Body::Right)];
     for (entries, slots, body) in teams {
         for (i, (entry, slot)) in entries.iter().zip(slots.iter_mut()).enumerate() {
             match &entry.random {
                 Some(Spot::Relative(anchor)) => pending.push((body(i), anchor)),
-                Some(spot) => [slot.x, slot.y] = spot.draw(rng),
+                Some(spot) => [slot.x, slot.y] = spot.draw(rng, &mut shared),
                 None => {}
             }
         }
     }
     match ball {
         Some(Spot::Relative(anchor)) => pending.push((Body::Ball, anchor)),
-        Some(spot) => p.ball = spot.draw(rng),
+        Some(spot) => p.ball = spot.draw(rng, &mut shared),
         None => {}
     }
     place_pending(p, pending, swapped, rng);

@@ -18,7 +18,7 @@ pub const PITCH_HALF_WIDTH: f32 = 0.42;
 /// One coordinate: a number, or a distribution drawn at every reset.
 ///
 /// JSON: a number (`0.5`), or one of `{"uniform": [low, high]}`, `{"normal": [mean, std]}`,
-/// `{"choice": [v1, v2, …]}`.
+/// `{"choice": [v1, v2, …]}`, or `{"shared": KEY, "of": <distribution>}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
 pub enum Sample {
@@ -26,7 +26,26 @@ pub enum Sample {
     Fixed(f32),
     /// A value drawn from a distribution.
     Random(Distribution),
+    /// A value drawn from a distribution once per placement and shared by every sample with the
+    /// same key (`.tl`: a `param` holding a distribution, used in several places).
+    Shared(Shared),
 }
+
+/// A draw shared by the samples of one key: the underlying uniform, normal or pick is drawn once
+/// per placement (at the first sample of the key met), and each sample maps it through its own
+/// distribution, so `uniform(-5 m, 5 m)` shared by a player and the ball, converted to each one's
+/// units, puts both at the same metre.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Shared {
+    /// Samples with the same key share one draw.
+    pub shared: u32,
+    /// This sample's distribution.
+    pub of: Distribution,
+}
+
+/// The shared draws of one placement, by key: `(key, underlying value)`.
+pub(crate) type SharedDraws = Vec<(u32, f32)>;
 
 /// A distribution of one coordinate.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -86,11 +105,31 @@ pub enum Spot {
 }
 
 impl Sample {
-    /// Draws the value; `limit` is the half-extent of the axis a normal draw is clipped to.
-    pub(crate) fn draw(&self, rng: &mut MatchRng, limit: f32) -> f32 {
+    /// Draws the value; `limit` is the half-extent of the axis a normal draw is clipped to;
+    /// `shared` holds this placement's shared draws.
+    pub(crate) fn draw(&self, rng: &mut MatchRng, limit: f32, shared: &mut SharedDraws) -> f32 {
         match self {
             Sample::Fixed(v) => *v,
             Sample::Random(d) => d.draw(rng, limit),
+            Sample::Shared(s) => {
+                let underlying = match shared.iter().find(|(key, _)| *key == s.shared) {
+                    Some(&(_, u)) => u,
+                    None => {
+                        let u = s.of.underlying(rng);
+                        shared.push((s.shared, u));
+                        u
+                    }
+                };
+                s.of.map(underlying, limit)
+            }
+        }
+    }
+
+    /// The distribution, if the value is drawn.
+    fn distribution(&self) -> Option<&Distribution> {
+        match self {
+            Sample::Fixed(_) => None,
+            Sample::Random(d) | Sample::Shared(Shared { of: d, .. }) => Some(d),
         }
     }
 
@@ -98,9 +137,12 @@ impl Sample {
     pub fn nominal(&self) -> f32 {
         match self {
             Sample::Fixed(v) => *v,
-            Sample::Random(Distribution::Uniform(a, b)) => 0.5 * (a + b),
-            Sample::Random(Distribution::Normal(mean, _)) => *mean,
-            Sample::Random(Distribution::Choice(values)) => values.first().copied().unwrap_or(0.0),
+            Sample::Random(_) | Sample::Shared(_) => match self.distribution() {
+                Some(Distribution::Uniform(a, b)) => 0.5 * (a + b),
+                Some(Distribution::Normal(mean, _)) => *mean,
+                Some(Distribution::Choice(values)) => values.first().copied().unwrap_or(0.0),
+                None => 0.0,
+            },
         }
     }
 
@@ -120,12 +162,14 @@ impl Sample {
                 Err("choice needs at least one finite value".into())
             }
             Sample::Random(_) => Ok(()),
+            Sample::Shared(s) => Sample::Random(s.of.clone()).check(),
         }
     }
 
     /// The smallest and largest value a draw can take (before clipping, normal ±4σ).
     pub(crate) fn bounds(&self) -> [f32; 2] {
         match self {
+            Sample::Shared(s) => Sample::Random(s.of.clone()).bounds(),
             Sample::Fixed(v) => [*v, *v],
             Sample::Random(Distribution::Uniform(a, b)) => [*a, *b],
             Sample::Random(Distribution::Normal(m, s)) => [m - 4.0 * s, m + 4.0 * s],
@@ -144,10 +188,24 @@ impl From<f32> for Sample {
 
 impl Distribution {
     fn draw(&self, rng: &mut MatchRng, limit: f32) -> f32 {
+        self.map(self.underlying(rng), limit)
+    }
+
+    /// The draw underneath: a uniform in [0, 1) for `uniform` and `choice`, a standard normal for
+    /// `normal` (the same use of the stream as a draw of its own).
+    fn underlying(&self, rng: &mut MatchRng) -> f32 {
         match self {
-            Distribution::Uniform(a, b) => a + (b - a) * rng.unit(),
-            Distribution::Normal(mean, std) => (mean + std * standard_normal(rng)).clamp(-limit, limit),
-            Distribution::Choice(values) => values[pick(rng, values.len())],
+            Distribution::Uniform(..) | Distribution::Choice(_) => rng.unit(),
+            Distribution::Normal(..) => standard_normal(rng),
+        }
+    }
+
+    /// The value of underlying draw `u` (see [`Distribution::underlying`]).
+    fn map(&self, u: f32, limit: f32) -> f32 {
+        match self {
+            Distribution::Uniform(a, b) => a + (b - a) * u,
+            Distribution::Normal(mean, std) => (mean + std * u).clamp(-limit, limit),
+            Distribution::Choice(values) => values[((u * values.len() as f32) as usize).min(values.len() - 1)],
         }
     }
 }
@@ -204,9 +262,9 @@ impl Region {
 
 impl Spot {
     /// Draws a point.
-    pub(crate) fn draw(&self, rng: &mut MatchRng) -> [f32; 2] {
+    pub(crate) fn draw(&self, rng: &mut MatchRng, shared: &mut SharedDraws) -> [f32; 2] {
         match self {
-            Spot::Point { x, y } => [x.draw(rng, PITCH_HALF_LENGTH), y.draw(rng, PITCH_HALF_WIDTH)],
+            Spot::Point { x, y } => [x.draw(rng, PITCH_HALF_LENGTH, shared), y.draw(rng, PITCH_HALF_WIDTH, shared)],
             Spot::In(region) => region.draw(rng),
             Spot::OneOf(points) => points[pick(rng, points.len())],
             // Placed by `Scenario::draw`, which knows where the anchor was drawn.
@@ -232,7 +290,7 @@ impl Spot {
                 let clip = |[lo, hi]: [f32; 2], limit: f32, normal: bool| {
                     if normal { [lo.max(-limit), hi.min(limit)] } else { [lo, hi] }
                 };
-                let is_normal = |s: &Sample| matches!(s, Sample::Random(Distribution::Normal(..)));
+                let is_normal = |s: &Sample| matches!(s.distribution(), Some(Distribution::Normal(..)));
                 [clip(x.bounds(), PITCH_HALF_LENGTH, is_normal(x)), clip(y.bounds(), PITCH_HALF_WIDTH, is_normal(y))]
             }
             Spot::In(region) => region.bounds(),
@@ -285,10 +343,10 @@ mod tests {
         let circle = Region::Circle { x: 0.5, y: 0.1, r: 0.05 };
         let mut seen = [false; 2];
         for _ in 0..2_000 {
-            let u = uniform.draw(&mut rng, 1.0);
+            let u = uniform.draw(&mut rng, 1.0, &mut Vec::new());
             assert!((-0.2..=0.1).contains(&u));
-            assert!(normal.draw(&mut rng, PITCH_HALF_WIDTH).abs() <= PITCH_HALF_WIDTH);
-            let c = choice.draw(&mut rng, 1.0);
+            assert!(normal.draw(&mut rng, PITCH_HALF_WIDTH, &mut Vec::new()).abs() <= PITCH_HALF_WIDTH);
+            let c = choice.draw(&mut rng, 1.0, &mut Vec::new());
             seen[usize::from(c > 0.2)] = true;
             let [x, y] = circle.draw(&mut rng);
             assert!(circle.contains(x, y) || (x - 0.5).hypot(y - 0.1) < 0.050_001);

@@ -118,7 +118,7 @@ pub(crate) fn separate_players(players: &mut [Player], owner: Option<usize>) {
     } else {
         let mut bodies = Bodies::of(players);
         for i in 0..n {
-            if players[i].active && bodies.may_touch_later(i) {
+            if players[i].active && bodies.may_touch_later(i, n) {
                 resolve_contacts(players, i, owner);
                 bodies = Bodies::of(players);
             }
@@ -155,15 +155,16 @@ impl Bodies {
         bodies
     }
 
-    /// Whether player `i` may touch any of the players after him: the squared distance computed
-    /// as [`resolve_contacts`] computes it, four players at a time (glam's `Vec4` is SIMD), and
-    /// true also for anything it cannot rule out (a non-finite position), so a row it passes over
-    /// holds no contact.
-    fn may_touch_later(&self, i: usize) -> bool {
+    /// Whether player `i` may touch any of the players after him, up to `n`: the squared
+    /// distance computed as [`resolve_contacts`] computes it, four players at a time (glam's
+    /// `Vec4` is SIMD), and true also for anything it cannot rule out (a non-finite position), so
+    /// a row it passes over holds no contact. Only the groups that hold players are scanned (a
+    /// drill has a handful).
+    fn may_touch_later(&self, i: usize, n: usize) -> bool {
         let (xi, yi) = (Vec4::splat(self.x[i]), Vec4::splat(self.y[i]));
         let apart = Vec4::splat(MIN_DIST * MIN_DIST);
         let mut near = 0u32;
-        for c in (i + 1) / 4..SLOTS / 4 {
+        for c in (i + 1) / 4..n.div_ceil(4) {
             let dx = Vec4::from_slice(&self.x[4 * c..]) - xi;
             let dy = Vec4::from_slice(&self.y[4 * c..]) - yi;
             near |= (!(dx * dx + dy * dy).cmpge(apart).bitmask() & 0b1111) << (4 * c);

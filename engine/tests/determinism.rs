@@ -70,4 +70,4 @@ fn pinned_trajectory_hash() {
     assert_eq!(h, PINNED, "trajectory hash changed: {h:#018x}");
 }
 
-const PINNED: u64 = 0x2cd7_3a87_d122_33a2;
+const PINNED: u64 = 0xbe50_839f_a5cb_c524;

@@ -88,6 +88,68 @@ fn a_pass_played_straight_back_leaves_the_ball_where_it_lay_while_he_turns() {
 }
 
 #[test]
+fn the_ball_placed_at_his_feet_is_his_only_from_the_second_step() {
+    // GRF 2.10, academy_run_to_score and academy_empty_goal with an idle agent: owned from env
+    // step 2-4, never at the first.
+    for name in ["academy_run_to_score", "academy_empty_goal"] {
+        let mut env = common::env(name, 3);
+        let mut first = None;
+        for t in 0..8 {
+            env.step(&[Action::Idle]).unwrap();
+            if first.is_none() && owned_by_agent(&env) {
+                first = Some(t);
+            }
+        }
+        let first = first.unwrap_or_else(|| panic!("{name}: he never takes the ball"));
+        assert!((2..=4).contains(&first), "{name}: his from step {first}");
+    }
+}
+
+#[test]
+fn a_shot_pressed_at_the_ball_before_it_is_his_is_struck_first_time() {
+    // GRF 2.10, academy_run_to_score, shot pressed at env step 1 (the ball not yet his): struck
+    // at step 4, and our team never shows as its owner. At step 0 the press does nothing.
+    for seed in 0..4 {
+        let mut env = common::env("academy_run_to_score", seed);
+        let (ball, _) = play(&mut env, &[Action::Idle, Action::Shot], 25);
+        let struck = ball.iter().position(|b| b[0] > 0.04).expect("the shot is struck");
+        assert!((3..=5).contains(&struck), "seed {seed}: struck at step {struck}");
+        assert!(ball.iter().map(|b| b[0]).fold(f32::MIN, f32::max) > 0.4, "seed {seed}: a shot at goal");
+
+        let mut env = common::env("academy_run_to_score", seed);
+        let mut ever_ours = false;
+        for t in 0..6 {
+            env.step(&[if t == 1 { Action::Shot } else { Action::Idle }]).unwrap();
+            ever_ours |= env.observations()[0].ball_owned_team == 0;
+        }
+        assert!(!ever_ours, "seed {seed}: a first-time shot never shows the ball as ours");
+
+        let mut env = common::env("academy_run_to_score", seed);
+        let (ball, _) = play(&mut env, &[Action::Shot], 12);
+        assert!(ball.iter().all(|b| b[0] < 0.1), "seed {seed}: a press at step 0 does nothing");
+    }
+}
+
+#[test]
+fn a_pass_pressed_at_the_ball_before_it_is_his_fails_and_holds_him() {
+    // GRF 2.10, academy_empty_goal, long or short pass pressed at env step 1: the ball does not
+    // move and he takes it only 36-44 steps later.
+    for kind in [Action::LongPass, Action::ShortPass] {
+        let mut env = common::env("academy_empty_goal", 2);
+        let mut first = None;
+        for t in 0..60 {
+            env.step(&[if t == 1 { kind } else { Action::Idle }]).unwrap();
+            if first.is_none() && owned_by_agent(&env) {
+                first = Some(t);
+            }
+            assert!(env.observations()[0].ball[0] < 0.05, "{kind:?}: the ball moved at step {t}");
+        }
+        let first = first.unwrap_or(99);
+        assert!((30..=50).contains(&first), "{kind:?}: his from step {first}");
+    }
+}
+
+#[test]
 fn the_ball_leaves_the_foot_after_the_release_and_the_wind_up() {
     // academy_empty_goal_close, the CB facing the empty goal with the ball: one step of shot.
     // GRF shows the ball at his feet owned by nobody until he plays it; his button counts.

@@ -347,7 +347,8 @@ impl Match {
     /// Whether `side`'s player `index` may play the ball now: he has it, or it lies loose at his
     /// feet and nobody is nearer. His pass and shot buttons count only then.
     pub fn may_play_ball(&self, side: Side, index: usize) -> bool {
-        self.may_play(self.global_index(side, index))
+        let g = self.global_index(side, index);
+        self.may_play(g) || self.at_loose_ball(g)
     }
 
     /// Gives `side`'s player `index` to an agent (`Some(input)`) or back to the built-in AI (`None`).

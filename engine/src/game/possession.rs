@@ -28,6 +28,14 @@ const TRAP_SPEED: f32 = 13.0;
 const CATCH_SPEED: f32 = 24.0;
 /// A ball coming at a keeper faster than this (m/s) is a shot he may not reach.
 const SHOT_SPEED: f32 = 12.0;
+/// How near (m) a loose ball must be for an agent's button to count before he has touched it.
+const AT_LOOSE_BALL: f32 = 2.0;
+/// No button counts during an episode's first env step (10 ticks): GRF's first step plays the
+/// kickoff, and a pass or shot pressed in it does nothing (measured, GRF 2.10).
+const FIRST_STEP_TICKS: u64 = 10;
+/// An agent's player does not take the ball placed at his feet before this tick of the episode
+/// (GRF 2.10: owned from env step 2-4).
+const FIRST_TOUCH_TICK: u64 = 25;
 /// Standing tackle: range (m) and success chance per tick at equal skill.
 const TACKLE_RANGE: f32 = 0.9;
 const TACKLE_CHANCE: f32 = 0.025;
@@ -242,6 +250,27 @@ impl Match {
             && !self.players.iter().any(|q| q.active && q.position.distance_squared(ball.xy()) < d2)
     }
 
+    /// Whether `g` is his team's man at a loose ball at his feet: low, slow, within
+    /// [`AT_LOOSE_BALL`] m and no team-mate nearer. GRF's buttons count for the designated
+    /// possession player before he has touched the ball: a shot is struck at his first touch, a
+    /// pass fails.
+    pub(crate) fn at_loose_ball(&self, g: usize) -> bool {
+        if self.owner.is_some()
+            || self.mode != GameMode::Normal
+            || !self.players[g].active
+            || self.in_play_ticks < FIRST_STEP_TICKS
+        {
+            return false;
+        }
+        let ball = self.ball;
+        let p = &self.players[g];
+        let d2 = p.position.distance_squared(ball.xy());
+        ball.position.z < 0.5
+            && d2 < AT_LOOSE_BALL * AT_LOOSE_BALL
+            && (ball.velocity.truncate() - p.velocity).length_squared() < 36.0
+            && !self.players.iter().any(|q| q.active && q.side == p.side && q.position.distance_squared(ball.xy()) < d2)
+    }
+
     /// `g` plays a loose ball he [may play](Match::may_play) without having touched it: he takes
     /// it now, so that the kick he asks for can follow.
     pub(crate) fn take_to_play(&mut self, g: usize) {
@@ -266,7 +295,21 @@ impl Match {
         let mut best = None;
         let mut best_d2 = f32::INFINITY;
         for (g, p) in self.players.iter().enumerate() {
-            if !p.active || p.touch_cooldown > 0 {
+            if !p.active || p.touch_cooldown > 0 || p.control_blocked > 0 {
+                continue;
+            }
+            if p.queued_shot.is_some_and(|(_, left)| left > 0) {
+                // Still winding up the shot he asked for: he strikes the ball, not traps it.
+                continue;
+            }
+            if self.agent_driven[g]
+                && self.possessor.is_none()
+                && self.in_play_ticks < FIRST_TOUCH_TICK
+                && ball.velocity.length_squared() < 0.09
+            {
+                // The ball as placed at the start: an agent's player takes it only after his
+                // first touch has had time (GRF 2.10 shows it his from env step 2-4), so the
+                // buttons he presses before then are the ones of a man at a loose ball.
                 continue;
             }
             // Law 12: the keeper may not handle a ball a team-mate deliberately kicked to him (GRF's
@@ -291,7 +334,11 @@ impl Match {
             if ball.position.z > height {
                 continue;
             }
-            if self.agent_driven[g] && self.possessor.is_none() && resting_at(&ball, self.wanted_velocity(g)) {
+            if self.agent_driven[g]
+                && self.possessor.is_none()
+                && p.queued_shot.is_none()
+                && resting_at(&ball, self.wanted_velocity(g))
+            {
                 // An agent's player standing at the ball as it was placed at the start does not
                 // touch it: GRF shows it owned by nobody until he moves or plays it (see
                 // `Match::take_to_play`).
@@ -328,6 +375,13 @@ impl Match {
         {
             // A first-time kick: the touch is the kick; he never has the ball at his feet.
             self.inputs[g].first_time = None;
+            self.execute_kick(g, kick);
+            return;
+        }
+        if let Some((kick, _)) = self.players[g].queued_shot.take()
+            && !keeper_hands
+        {
+            // An agent's shot asked for before he had the ball: struck at the first touch.
             self.execute_kick(g, kick);
             return;
         }

@@ -19,6 +19,9 @@ const KICK_COOLDOWN: u16 = 25;
 /// Wind-up of a shot and of a pass (ticks) before any turning (see `Match::wind_up_ticks`).
 const SHOT_WIND_UP: f32 = 17.0;
 const PASS_WIND_UP: f32 = 10.0;
+/// How long (ticks) an agent's pass asked for at a loose ball not yet his keeps him from the ball
+/// (GRF 2.10, measured in academy_empty_goal: he takes it 36-44 env steps after the press).
+const CONTROL_BLOCKED_TICKS: u16 = 350;
 /// Within this distance (m) of a loose ball an agent's player steps to it by himself, whatever his
 /// stick says; beyond it he chases it only with his stick idle (GRF's automatic ball control: the
 /// academy drills' carriers start up to 1.4 m from the ball).
@@ -81,9 +84,15 @@ impl Match {
         } else if let Some(stoppage) = rules::fouls::advantage(self) {
             self.stop_play(stoppage);
         }
+        let loose = self.owner.is_none();
         for p in &mut self.players {
             p.touch_cooldown = p.touch_cooldown.saturating_sub(1);
             p.dive_ticks = p.dive_ticks.saturating_sub(1);
+            p.control_blocked = p.control_blocked.saturating_sub(1);
+            if let Some((kick, left)) = p.queued_shot {
+                // Forgotten once someone has the ball or it gets away from him.
+                p.queued_shot = (loose && left < 200).then_some((kick, left.saturating_sub(1)));
+            }
         }
         if self.mode != GameMode::Normal {
             self.set_piece_ticks += 1;
@@ -143,6 +152,15 @@ impl Match {
                 if self.owner == Some(g) && self.players[g].pending_kick.is_none() {
                     let ticks = self.wind_up_ticks(g, &kick);
                     self.players[g].pending_kick = Some((kick, ticks));
+                } else if self.owner.is_none() && self.agent_driven[g] && self.at_loose_ball(g) {
+                    // GRF's buttons at a loose ball not yet his: a shot waits for his first
+                    // touch, a pass fails and holds him for 3.5 s (measured, GRF 2.10).
+                    if kick.kind == KickKind::Shot {
+                        let ticks = self.wind_up_ticks(g, &kick);
+                        self.players[g].queued_shot = Some((kick, ticks));
+                    } else {
+                        self.players[g].control_blocked = CONTROL_BLOCKED_TICKS;
+                    }
                 }
                 // A kick is a one-tick request.
                 self.inputs[g].kick = None;
@@ -369,7 +387,7 @@ impl Match {
     /// he sprints after it (measured: after his own shot from the centre spot of academy_empty_goal
     /// stops short of the line, our CB with no direction pressed runs 45 m after it at 7.8 m/s).
     fn ball_control_step(&self, g: usize) -> Option<Vec2> {
-        if self.owner.is_some() || self.mode != GameMode::Normal {
+        if self.owner.is_some() || self.mode != GameMode::Normal || self.players[g].control_blocked > 0 {
             return None;
         }
         let ball = self.ball;
@@ -392,7 +410,7 @@ impl Match {
         }
         // A ball already at his feet he leaves be, unless he is on his way to it.
         if ball.position.z > 0.5
-            || (d2 < AT_FEET * AT_FEET && !me.controlling_ball)
+            || (d2 < AT_FEET * AT_FEET && !me.controlling_ball && me.queued_shot.is_none())
             || (ball.velocity.truncate() - me.velocity).length_squared() > 9.0
         {
             return None;

@@ -51,6 +51,14 @@ pub struct Player {
     /// An agent's player is stepping to a loose ball by himself (GRF's automatic ball control).
     #[serde(default)]
     pub(crate) controlling_ball: bool,
+    /// A shot an agent asked for at a loose ball at his feet before he had it, struck at his
+    /// first touch once its wind-up (ticks) has passed: he never shows as the ball's owner.
+    #[serde(default)]
+    pub(crate) queued_shot: Option<(Kick, u16)>,
+    /// Ticks during which an agent's player, who asked for a pass at a loose ball before he had
+    /// it, cannot control the ball (GRF's pass command fails and holds his action).
+    #[serde(default)]
+    pub(crate) control_blocked: u16,
 }
 
 /// Walking speed (m/s) with a direction and no modifier (grf.md §5.4).
@@ -83,6 +91,8 @@ impl Player {
             slide_ticks: 0,
             dive_ticks: 0,
             pending_kick: None,
+            queued_shot: None,
+            control_blocked: 0,
             controlling_ball: false,
         }
     }
@@ -113,6 +123,8 @@ impl Player {
         self.dive_ticks = 0;
         self.pending_kick = None;
         self.touch_cooldown = 0;
+        self.queued_shot = None;
+        self.control_blocked = 0;
     }
 }
 

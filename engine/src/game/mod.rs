@@ -344,8 +344,10 @@ impl Match {
         self.agent_driven[self.global_index(side, index)]
     }
 
-    /// Whether `side`'s player `index` may play the ball now: he has it, or it lies loose at his
-    /// feet and nobody is nearer. His pass and shot buttons count only then.
+    /// Whether `side`'s player `index` may play the ball now: he has it, it lies loose at his feet
+    /// and nobody is nearer, or he is his team's man at a loose ball within 2 m (a shot is then
+    /// struck at his first touch, a pass fails; see `Match::at_loose_ball`). His pass and shot
+    /// buttons count only then.
     pub fn may_play_ball(&self, side: Side, index: usize) -> bool {
         let g = self.global_index(side, index);
         self.may_play(g) || self.at_loose_ball(g)

@@ -144,8 +144,9 @@ impl Match {
             }
             let input = self.inputs[g];
             if let Some(kick) = input.kick {
-                // Only the player on the ball can start a kick: GRF drops a press made without the
-                // ball rather than buffering it into a later kick. One kick at a time.
+                // Only the player on the ball, or an agent's player at a loose ball not yet his
+                // (below), can start a kick: GRF drops any other press rather than buffering it
+                // into a later kick. One kick at a time.
                 if self.players[g].pending_kick.is_none() && self.may_play(g) {
                     self.take_to_play(g);
                 }

@@ -6,34 +6,12 @@
 //! Examples are compiled as if they were files in `tests/fixtures/reference/`, so that
 //! `import "drills.tl"` finds the file the README describes.
 
+mod markdown;
+
+use markdown::{Block, blocks};
 use touchline_dsl::{compile, load_json};
 
 const README: &str = include_str!("../../grammar/README.md");
-
-/// A fenced block: its info string, its text and the 1-based line of its opening fence.
-struct Block {
-    info: String,
-    text: String,
-    line: usize,
-}
-
-fn blocks(markdown: &str) -> Vec<Block> {
-    let mut out = Vec::new();
-    let mut open: Option<Block> = None;
-    for (i, line) in markdown.lines().enumerate() {
-        match (&mut open, line.strip_prefix("```")) {
-            (None, Some(info)) => open = Some(Block { info: info.trim().to_owned(), text: String::new(), line: i + 1 }),
-            (Some(_), Some("")) => out.extend(open.take()),
-            (Some(block), _) => {
-                block.text.push_str(line);
-                block.text.push('\n');
-            }
-            (None, None) => {}
-        }
-    }
-    assert!(open.is_none(), "an unclosed code block in the README");
-    out
-}
 
 fn expected_codes(text: &str) -> Vec<String> {
     text.lines()

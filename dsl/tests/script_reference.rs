@@ -4,39 +4,17 @@
 //! `// expect:` line names; the property table is the state scripts see; and every `tl::S…` code
 //! the crate defines is in the code tables of scripts.md and grammar/README.md.
 
+mod markdown;
+
 use std::path::PathBuf;
 
+use markdown::{Block, blocks};
 use touchline_dsl::script::{STATE_PROPERTIES, ScriptOptions, Scripts};
 use touchline_dsl::{build_env, compile};
 use touchline_engine::{ActionSet, EnvConfig};
 
 const SCRIPTS: &str = include_str!("../../grammar/scripts.md");
 const LANGUAGE: &str = include_str!("../../grammar/README.md");
-
-/// A fenced block: its info string, its text and the 1-based line of its opening fence.
-struct Block {
-    info: String,
-    text: String,
-    line: usize,
-}
-
-fn blocks(markdown: &str) -> Vec<Block> {
-    let mut out = Vec::new();
-    let mut open: Option<Block> = None;
-    for (i, line) in markdown.lines().enumerate() {
-        match (&mut open, line.strip_prefix("```")) {
-            (None, Some(info)) => open = Some(Block { info: info.trim().to_owned(), text: String::new(), line: i + 1 }),
-            (Some(_), Some("")) => out.extend(open.take()),
-            (Some(block), _) => {
-                block.text.push_str(line);
-                block.text.push('\n');
-            }
-            (None, None) => {}
-        }
-    }
-    assert!(open.is_none(), "an unclosed code block in scripts.md");
-    out
-}
 
 /// The script blocks by file name (`// progress.rhai: …` on their first line), written into a
 /// scratch folder.

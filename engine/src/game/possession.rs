@@ -298,7 +298,7 @@ impl Match {
             if !p.active || p.touch_cooldown > 0 || p.control_blocked > 0 {
                 continue;
             }
-            if p.queued_shot.is_some_and(|(_, left)| left > 0) {
+            if p.queued_shot.is_some_and(|(_, left)| left > super::tick::QUEUED_SHOT_WINDOW) {
                 // Still winding up the shot he asked for: he strikes the ball, not traps it.
                 continue;
             }

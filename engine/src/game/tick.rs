@@ -19,6 +19,9 @@ const KICK_COOLDOWN: u16 = 25;
 /// Wind-up of a shot and of a pass (ticks) before any turning (see `Match::wind_up_ticks`).
 const SHOT_WIND_UP: f32 = 17.0;
 const PASS_WIND_UP: f32 = 10.0;
+/// How long (ticks) after its wind-up an agent's shot asked for at a loose ball waits for his first
+/// touch before it is forgotten (GRF's human controller buffers a command 1,000 ms).
+pub(crate) const QUEUED_SHOT_WINDOW: u16 = 100;
 /// How long (ticks) an agent's pass asked for at a loose ball not yet his keeps him from the ball
 /// (GRF 2.10, measured in academy_empty_goal: he takes it 36-44 env steps after the press).
 const CONTROL_BLOCKED_TICKS: u16 = 350;
@@ -90,8 +93,9 @@ impl Match {
             p.dive_ticks = p.dive_ticks.saturating_sub(1);
             p.control_blocked = p.control_blocked.saturating_sub(1);
             if let Some((kick, left)) = p.queued_shot {
-                // Forgotten once someone has the ball or it gets away from him.
-                p.queued_shot = (loose && left < 200).then_some((kick, left.saturating_sub(1)));
+                // Forgotten once someone has the ball, or a second after its wind-up if he has
+                // not reached the ball by then (GRF's 1,000 ms command buffer).
+                p.queued_shot = (loose && left > 1).then_some((kick, left - 1));
             }
         }
         if self.mode != GameMode::Normal {
@@ -158,7 +162,7 @@ impl Match {
                     // touch, a pass fails and holds him for 3.5 s (measured, GRF 2.10).
                     if kick.kind == KickKind::Shot {
                         let ticks = self.wind_up_ticks(g, &kick);
-                        self.players[g].queued_shot = Some((kick, ticks));
+                        self.players[g].queued_shot = Some((kick, ticks + QUEUED_SHOT_WINDOW));
                     } else {
                         self.players[g].control_blocked = CONTROL_BLOCKED_TICKS;
                     }

@@ -51,8 +51,9 @@ pub struct Player {
     /// An agent's player is stepping to a loose ball by himself (GRF's automatic ball control).
     #[serde(default)]
     pub(crate) controlling_ball: bool,
-    /// A shot an agent asked for at a loose ball at his feet before he had it, struck at his
-    /// first touch once its wind-up (ticks) has passed: he never shows as the ball's owner.
+    /// A shot an agent asked for at a loose ball at his feet before he had it, and the ticks left:
+    /// struck at his first touch once its wind-up has passed, forgotten a second after that. He
+    /// never shows as the ball's owner.
     #[serde(default)]
     pub(crate) queued_shot: Option<(Kick, u16)>,
     /// Ticks during which an agent's player, who asked for a pass at a loose ball before he had

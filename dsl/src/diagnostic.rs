@@ -121,6 +121,14 @@ pub enum Code {
     /// [`RewardTerm::MAX_WEIGHT`](touchline_engine::scenario::RewardTerm::MAX_WEIGHT) in magnitude:
     /// summed in f32 with other terms it could make the reward inf or NaN.
     RewardTooLarge,
+    /// `start with` names a restart that is not known (`penalty` for `penalty_kick`).
+    UnknownRestart,
+    /// A `start with` that cannot be set up: no team or an unknown one, a point missing where the
+    /// restart needs one or given where it has a fixed spot, a corner or throw-in point on neither
+    /// side, or together with `start from`.
+    RestartShape,
+    /// `facing` with something other than `ball`, `goal` or a non-zero direction `(dx, dy)`.
+    Facing,
     /// Warning: a player or ball outside the lines (but inside the rim, so still playable).
     OutsideLines,
     /// Warning: the left team has no controllable player, so an agent has no one to drive.
@@ -135,11 +143,13 @@ pub enum Code {
     /// Warning: a parameter holding a distribution used more than once (each use is drawn on its
     /// own).
     RepeatedDraw,
+    /// Warning: `ball at` in a scenario that starts with a restart, which places the ball itself.
+    BallReplaced,
 }
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 53] = [
+    pub const ALL: [Code; 57] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -187,12 +197,16 @@ impl Code {
         Code::RewardTooLarge,
         Code::UnreadableSource,
         Code::PlacementCycle,
+        Code::UnknownRestart,
+        Code::RestartShape,
+        Code::Facing,
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
         Code::NoEffect,
         Code::UnreachableStage,
         Code::RepeatedDraw,
+        Code::BallReplaced,
     ];
 
     /// The code as shown: `tl::E100` … `tl::W102`.
@@ -245,12 +259,16 @@ impl Code {
             Code::RewardTooLarge => "tl::E149",
             Code::UnreadableSource => "tl::E150",
             Code::PlacementCycle => "tl::E151",
+            Code::UnknownRestart => "tl::E152",
+            Code::RestartShape => "tl::E153",
+            Code::Facing => "tl::E154",
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",
             Code::NoEffect => "tl::W103",
             Code::UnreachableStage => "tl::W104",
             Code::RepeatedDraw => "tl::W105",
+            Code::BallReplaced => "tl::W106",
         }
     }
 

@@ -208,7 +208,7 @@ impl Formatter<'_> {
                 self.leading(p.span.end, 4);
                 let _ = write!(self.out, "    {} {}", p.role.value, place(&p.place));
                 for flag in &p.flags {
-                    self.out.push_str(flag_text(flag.value));
+                    self.out.push_str(&flag_text(&flag.value));
                 }
                 if let Some(b) = &p.behaviour {
                     let _ = write!(self.out, " {}", behaviour(b));
@@ -248,7 +248,7 @@ fn statement_line(kind: &StatementKind) -> String {
                 for p in &t.players {
                     let _ = write!(s, " {} {}", p.role.value, place(&p.place));
                     for flag in &p.flags {
-                        s.push_str(flag_text(flag.value));
+                        s.push_str(&flag_text(&flag.value));
                     }
                     if let Some(b) = &p.behaviour {
                         let _ = write!(s, " {}", behaviour(b));
@@ -284,6 +284,16 @@ fn statement_line(kind: &StatementKind) -> String {
             format!("behaviour {} {}", expr(player), behaviour(b))
         }
         StatementKind::StartFrom(p) => format!("start from \"{}\"", p.value),
+        StatementKind::StartWith(w) => {
+            let mut s = format!("start with {}", w.restart.value);
+            if let Some(t) = &w.team {
+                let _ = write!(s, " for {}", t.value);
+            }
+            if let Some(at) = &w.at {
+                let _ = write!(s, " at {}", expr(at));
+            }
+            s
+        }
         StatementKind::Setting { key, value } => format!("{} {}", key.value, expr(value)),
         StatementKind::Param { name, value } => format!("param {} = {}", name.value, expr(value)),
         StatementKind::Assign { name, value } => format!("{} = {}", name.value, expr(value)),
@@ -306,11 +316,12 @@ fn advance_text(a: &syntax::Advance) -> String {
     s
 }
 
-fn flag_text(f: Flag) -> &'static str {
+fn flag_text(f: &Flag) -> String {
     match f {
-        Flag::Lazy => " lazy",
-        Flag::Controllable => " controllable",
-        Flag::NotControllable => " not controllable",
+        Flag::Lazy => " lazy".to_owned(),
+        Flag::Controllable => " controllable".to_owned(),
+        Flag::NotControllable => " not controllable".to_owned(),
+        Flag::Facing(e) => format!(" facing {}", expr(e)),
     }
 }
 

@@ -6,7 +6,7 @@ use std::fmt::Write;
 
 use touchline_engine::scenario::{
     Behaviour, Body, Comparison, Condition, Criterion, Distribution, EndCondition, EventAtom, EventKind, EventReward,
-    EventStep, EventTeam, Owner, PassKind, Region, Require, RewardKind, Sample, Spot, Stage, Target,
+    EventStep, EventTeam, Facing, Owner, PassKind, Region, Require, RewardKind, Sample, Spot, Stage, Target,
 };
 use touchline_engine::{GameMode, PlayerEntry, Scenario, Side};
 
@@ -105,6 +105,9 @@ fn statements(out: &mut String, s: &Scenario, base: &Scenario, indent: usize, to
             EndCondition::BallIn(r) => format!("ball in {}", region(r)),
             EndCondition::Script { path } => format!("script \"{path}\""),
             EndCondition::When(c) => end_condition(c),
+            EndCondition::Save => "save".to_owned(),
+            EndCondition::KeeperHoldsBall => "keeper_holds_ball".to_owned(),
+            EndCondition::RestartTaken => "restart_taken".to_owned(),
         }));
         if conditions.is_empty() {
             // No condition at all: only the time limit ends the episode.
@@ -120,7 +123,20 @@ fn statements(out: &mut String, s: &Scenario, base: &Scenario, indent: usize, to
     } else if !s.swap_teams_on_odd_episodes && base.swap_teams_on_odd_episodes {
         let _ = writeln!(out, "{pad}swap_teams_on_odd_episodes false");
     }
-    if (s.ball_position, &s.ball_random) != (base.ball_position, &base.ball_random) {
+    if let Some(w) = s.start_with.filter(|_| s.start_with != base.start_with) {
+        let side = if w.team == Side::Left { "left" } else { "right" };
+        let mut line = format!("start with {} for {side}", crate::compile::restart_name(w.mode));
+        match w.at {
+            Some([_, y]) if w.mode == GameMode::Corner => line.push_str(if y < 0.0 { " at top" } else { " at bottom" }),
+            Some([x, y]) => {
+                let _ = write!(line, " at ({}, {})", number(x), number(y));
+            }
+            None => {}
+        }
+        let _ = writeln!(out, "{pad}{line}");
+    }
+    // A restart puts the ball on its spot: the compiler writes the spot as the ball's start.
+    if s.start_with.is_none() && (s.ball_position, &s.ball_random) != (base.ball_position, &base.ball_random) {
         let _ = writeln!(out, "{pad}ball {}", place(s.ball_position, s.ball_random.as_ref()));
     }
     if let Some([x, y]) =
@@ -188,6 +204,14 @@ fn player(p: &PlayerEntry, side: Side) -> String {
     }
     if !p.controllable {
         line.push_str(" not controllable");
+    }
+    match p.facing {
+        Some(Facing::Ball) => line.push_str(" facing ball"),
+        Some(Facing::Goal) => line.push_str(" facing goal"),
+        Some(Facing::Direction([dx, dy])) => {
+            let _ = write!(line, " facing ({}, {})", number(dx), number(dy));
+        }
+        None => {}
     }
     if !p.behaviour.is_empty() {
         let _ = write!(line, " does {}", stages(&p.behaviour, side));

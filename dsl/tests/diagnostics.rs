@@ -180,6 +180,17 @@ fixtures! {
     unreadable_source
     non_ascii_name
     placement_cycle
+    unknown_restart
+    restart_without_team
+    restart_unknown_team
+    restart_needs_a_place
+    restart_fixed_spot
+    corner_not_a_corner
+    throw_in_on_the_axis
+    start_with_and_from
+    facing_nowhere
+    ball_replaced_by_restart
+    end_only_save
     relative_to_the_ball
     relative_unknown_player
     param_on_both_axes

@@ -33,6 +33,8 @@ pub(crate) struct Origins {
     pub(crate) team_errors: [bool; 2],
     /// Each `require` statement of the merged scenario, in order.
     pub(crate) requires: Vec<Loc>,
+    /// The `start with` statement.
+    pub(crate) start_with: Option<Loc>,
 }
 
 /// Words that begin a statement (for "is the team block's `}` missing?").
@@ -81,6 +83,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
     let mut rewards_cleared = false;
     let mut requires = Vec::new();
     let mut deferred = Deferred::default();
+    let (mut start_with_span, mut start_from_span) = (None, None);
     for st in &def.statements {
         let key = match &st.kind {
             StatementKind::Extends(_) => "extends".to_owned(),
@@ -90,6 +93,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             StatementKind::Team(t) => format!("team {}", side_name(t.side.value)),
             StatementKind::End(_) => "end when".to_owned(),
             StatementKind::StartFrom(_) => "start from".to_owned(),
+            StatementKind::StartWith(_) => "start with".to_owned(),
             // `difficulty` is another name for `right_team_difficulty`: giving both is a duplicate.
             StatementKind::Setting { key, .. } if key.value == "difficulty" => "right_team_difficulty".to_owned(),
             StatementKind::Setting { key, .. } => key.value.clone(),
@@ -175,7 +179,26 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
                 }
             }
             StatementKind::End(conditions) => deferred.ends = condition::end_when(conditions, s, r),
-            StatementKind::StartFrom(path) => start_from(path, s, r),
+            StatementKind::StartFrom(path) => {
+                if let Some(with) = start_with_span {
+                    both_starts(with, st.span, r);
+                    continue;
+                }
+                start_from_span = Some(st.span);
+                s.start_with = None;
+                origins.start_with = None;
+                start_from(path, s, r);
+            }
+            StatementKind::StartWith(w) => {
+                if let Some(from) = start_from_span {
+                    both_starts(st.span, from, r);
+                    continue;
+                }
+                start_with_span = Some(st.span);
+                s.start_state = None;
+                origins.start_with = Some(Loc { source: r.source.clone(), span: st.span });
+                super::start_with::start_with(w, st.span, s, r);
+            }
             // Read by the compiler: parameters before the body, a curriculum and its criteria
             // after the scenario is complete.
             StatementKind::Param { .. }
@@ -187,6 +210,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
     // Behaviours, conditions, requires and relative places name players, so they are read once
     // this body's teams are in place.
     super::relative::resolve(&deferred.places, s, r);
+    super::start_with::ball_on_the_spot(s);
     behaviours(&deferred, s, r);
     for &(k, c) in &deferred.ends {
         if let Some(c) = condition::condition(c, Context::End, s, r) {
@@ -205,6 +229,21 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             origins.requires.push(Loc { source: r.source.clone(), span: st.span });
         }
     }
+}
+
+/// `tl::E153`: `start with` and `start from` in one definition.
+fn both_starts(with: Span, from: Span, r: &mut Reader<'_>) {
+    r.diags.push(
+        Diagnostic::new(
+            Code::RestartShape,
+            "a scenario starts either with a restart or from a saved state, not both",
+            r.source,
+            with,
+            "a restart",
+        )
+        .with_label(from, "a saved state")
+        .with_help("keep one of the two statements"),
+    );
 }
 
 /// `start from "file"`: the saved state's bytes, read relative to the scenario file.
@@ -388,10 +427,11 @@ fn team<'d>(
         let mut e = PlayerEntry::new(role, nominal[0], nominal[1]);
         e.random = random;
         for f in &p.flags {
-            match f.value {
+            match &f.value {
                 Flag::Lazy => e.lazy = true,
                 Flag::Controllable => e.controllable = true,
                 Flag::NotControllable => e.controllable = false,
+                Flag::Facing(value) => e.facing = super::start_with::facing(value, r),
             }
         }
         if let Some(b) = &p.behaviour {

@@ -21,6 +21,22 @@ const MAX_FAILURE: f64 = 1e-9;
 
 pub(super) fn check(s: &Scenario, o: &Origins, source: &Source, name_span: Span, diags: &mut Diagnostics) {
     let at_name = |code, message: String, label: &str| Diagnostic::new(code, message, source, name_span, label);
+    if let (Some(restart), Some(with), Some(ball)) = (&s.start_with, &o.start_with, &o.ball)
+        && ball.source.name() == with.source.name()
+    {
+        let name = super::start_with::restart_name(restart.mode);
+        diags.push(
+            Diagnostic::new(
+                Code::BallReplaced,
+                "the restart places the ball; `ball` is ignored",
+                &ball.source,
+                ball.span,
+                "ignored",
+            )
+            .with_label(with.span, format!("the {} puts the ball on its spot", name.replace('_', " ")))
+            .with_help("remove the `ball` statement"),
+        );
+    }
     for (i, (side, team)) in [("left", &s.left_team), ("right", &s.right_team)].into_iter().enumerate() {
         let team_loc = o.team[i].clone();
         let at_team = |code, message: String, label: &str| match &team_loc {
@@ -90,7 +106,10 @@ pub(super) fn check(s: &Scenario, o: &Origins, source: &Source, name_span: Span,
     }
     let ball_loc = o.ball.clone().unwrap_or(Loc { source: source.clone(), span: name_span });
     let ball = s.ball_random.as_ref().map_or([[s.ball_position[0]; 2], [s.ball_position[1]; 2]], Spot::bounds);
-    position(ball, "the ball", &ball_loc, diags);
+    // A restart's spot is where the laws put the ball (a corner's is on the lines).
+    if s.start_with.is_none() {
+        position(ball, "the ball", &ball_loc, diags);
+    }
     if diags.has_errors() {
         return;
     }

@@ -34,7 +34,8 @@ impl Context {
 }
 
 /// The names a bare condition may be.
-const NAMES: [&str; 4] = ["done", "score", "out_of_play", "possession_change"];
+const NAMES: [&str; 7] =
+    ["done", "score", "out_of_play", "possession_change", "save", "keeper_holds_ball", "restart_taken"];
 /// What a comparison may measure.
 const MEASURES: [&str; 3] = ["distance", "steps", "score"];
 /// What `X is …` may ask about.
@@ -92,7 +93,7 @@ pub(crate) fn condition(c: &syntax::Condition, ctx: Context, s: &Scenario, r: &m
                     None
                 }
             },
-            name @ ("score" | "out_of_play" | "possession_change") => {
+            name @ ("score" | "out_of_play" | "possession_change" | "save" | "keeper_holds_ball" | "restart_taken") => {
                 let help = match (name, ctx) {
                     ("score", _) => {
                         "to compare goals, write `score(left) >= 1`; `score` alone ends an episode on a goal as a whole `end when` condition"
@@ -121,7 +122,8 @@ pub(crate) fn condition(c: &syntax::Condition, ctx: Context, s: &Scenario, r: &m
 }
 
 /// The end conditions a name may give.
-const CONDITIONS: [&str; 3] = ["score", "out_of_play", "possession_change"];
+const CONDITIONS: [&str; 6] =
+    ["score", "out_of_play", "possession_change", "save", "keeper_holds_ball", "restart_taken"];
 
 /// `end when A or B …`: each top-level condition of the forms GRF knows (`score`, `out_of_play`,
 /// `possession_change`, `steps >= N`, `ball in REGION`, `script "…"`) keeps its own compiled form;
@@ -144,6 +146,9 @@ pub(crate) fn end_when<'d>(
                 "score" => s.end_episode_on_score = true,
                 "out_of_play" => s.end_episode_on_out_of_play = true,
                 "possession_change" => s.end_episode_on_possession_change = true,
+                "save" => s.end_when.push(EndCondition::Save),
+                "keeper_holds_ball" => s.end_when.push(EndCondition::KeeperHoldsBall),
+                "restart_taken" => s.end_when.push(EndCondition::RestartTaken),
                 other => {
                     let close = suggest::closest(other, &CONDITIONS);
                     r.error_help(
@@ -153,7 +158,7 @@ pub(crate) fn end_when<'d>(
                         "not an end condition",
                         suggest_help(
                             &close,
-                            "the conditions are score, out_of_play, possession_change, steps >= N, ball in REGION, script \"file.rhai\"",
+                            "the conditions are score, out_of_play, possession_change, save, keeper_holds_ball, restart_taken, steps >= N, ball in REGION, script \"file.rhai\"",
                         ),
                     );
                 }

@@ -12,6 +12,9 @@ mod events;
 mod params;
 mod pitch;
 mod relative;
+mod start_with;
+
+pub(crate) use start_with::restart_name;
 mod value;
 
 use std::collections::HashMap;

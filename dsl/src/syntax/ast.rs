@@ -119,6 +119,8 @@ pub enum StatementKind {
     },
     /// `start from "file"`.
     StartFrom(Spanned<String>),
+    /// `start with RESTART for TEAM [at PLACE]`.
+    StartWith(StartWith),
     /// `param NAME = VALUE`: declares a parameter (or overrides a parent's).
     Param {
         /// The parameter's name.
@@ -231,7 +233,7 @@ pub struct Player {
 }
 
 /// A player flag.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Flag {
     /// `lazy`.
     Lazy,
@@ -239,6 +241,19 @@ pub enum Flag {
     Controllable,
     /// `not controllable`.
     NotControllable,
+    /// `facing ball`, `facing goal`, `facing (dx, dy)`: the value after `facing`.
+    Facing(Expr),
+}
+
+/// `start with RESTART for TEAM [at PLACE]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StartWith {
+    /// The restart's name as written (`penalty_kick`, `corner_kick`, …).
+    pub restart: Spanned<String>,
+    /// The team after `for`, as written.
+    pub team: Option<Spanned<String>>,
+    /// The value after `at`.
+    pub at: Option<Expr>,
 }
 
 /// `at EXPR` or `in EXPR`.

@@ -226,6 +226,8 @@ fn rule_name(rule: &Rule) -> String {
         Rule::then_word => "`then`",
         Rule::end => "`end when`",
         Rule::start_from => "`start from`",
+        Rule::start_with | Rule::start_team | Rule::for_kw => "`start with`",
+        Rule::facing | Rule::facing_kw => "`facing`",
         Rule::setting | Rule::assignment => "a statement",
         Rule::param => "`param`",
         Rule::curriculum => "`curriculum`",

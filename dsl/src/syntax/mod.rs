@@ -192,6 +192,22 @@ fn statement(pair: Pair<'_, Rule>) -> Statement {
             StatementKind::Behaviour { player, behaviour }
         }
         Rule::start_from => StatementKind::StartFrom(string(first(pair))),
+        Rule::start_with => {
+            let mut it = inner(pair);
+            let r = it.next().expect("restart");
+            let restart = spanned(&r, r.as_str().to_owned());
+            let (mut team, mut at) = (None, None);
+            for p in it {
+                match p.as_rule() {
+                    Rule::start_team => {
+                        let t = inner(p).find(|t| t.as_rule() == Rule::ident).expect("team");
+                        team = Some(spanned(&t, t.as_str().to_owned()));
+                    }
+                    _ => at = Some(expr(first(p))),
+                }
+            }
+            StatementKind::StartWith(StartWith { restart, team, at })
+        }
         Rule::param | Rule::assignment => {
             let is_param = pair.as_rule() == Rule::param;
             let mut it = inner(pair);
@@ -296,9 +312,14 @@ fn player(pair: Pair<'_, Rule>) -> Player {
             true
         })
         .map(|f| {
-            let flag = match first(f.clone()).as_rule() {
+            let kind = first(f.clone());
+            let flag = match kind.as_rule() {
                 Rule::lazy => Flag::Lazy,
                 Rule::not_controllable => Flag::NotControllable,
+                Rule::facing => {
+                    let value = inner(kind).find(|v| v.as_rule() == Rule::operand_expr).expect("facing value");
+                    Flag::Facing(expr(value))
+                }
                 _ => Flag::Controllable,
             };
             spanned(&f, flag)
@@ -571,7 +592,10 @@ mod tests {
         assert_eq!(&text[file.comments[0].span.start..file.comments[0].span.end], "// here");
         let StatementKind::Team(t) = &d.statements[2].kind else { panic!() };
         assert_eq!(t.players.len(), 2);
-        assert_eq!(t.players[1].flags.iter().map(|f| f.value).collect::<Vec<_>>(), [Flag::Lazy, Flag::NotControllable]);
+        assert_eq!(
+            t.players[1].flags.iter().map(|f| f.value.clone()).collect::<Vec<_>>(),
+            [Flag::Lazy, Flag::NotControllable]
+        );
         let Place::At(Expr { kind: ExprKind::Tuple(args), .. }) = &t.players[1].place else { panic!() };
         let ExprKind::Quantity { value, unit: Some(u), .. } = &args[0].value.kind else { panic!() };
         assert_eq!((*value, u.value.as_str()), (10.0, "m"));

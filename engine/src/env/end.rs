@@ -1,18 +1,25 @@
 //! Episode-end conditions evaluated after every step, in GRF's order (grf.md §7.2): a goal, the
 //! ball going out of play, a change of possession (each when the scenario asks), then the time
-//! limit, which truncates rather than terminates.
+//! limit, which truncates rather than terminates. Beyond GRF, the ends drills from a restart
+//! need: a keeper's save, a keeper holding the ball, the starting restart taken.
 
 use crate::behaviour::Scope;
 use crate::game::{GameMode, Match};
 use crate::geometry::Side;
 use crate::geometry::coords::world_to_obs;
 use crate::scenario::{EndCondition, Scenario};
+use crate::stats::Event;
 
 /// What the end conditions remember between steps.
 #[derive(Clone, Copy, Debug, Default, serde::Serialize, serde::Deserialize)]
 pub(crate) struct EndTracker {
     previous_mode: Option<GameMode>,
     previous_owner: Option<Side>,
+    /// The game mode after the last step, or at the episode's start (for `restart_taken`; GRF's
+    /// `previous_mode` above starts unset instead).
+    last_mode: GameMode,
+    /// The team whose shot is still live: struck, and touched by nobody but the shooter since.
+    shot: Option<Side>,
 }
 
 impl EndTracker {
@@ -22,7 +29,13 @@ impl EndTracker {
     pub(crate) fn terminated(&mut self, scenario: &Scenario, game: &Match, steps: u32) -> bool {
         let (score, mode, owner) = (game.score(), game.mode(), game.owner().map(|o| o.0));
         let ball = world_to_obs(game.ball().xy());
+        let saved = self.saved(game);
+        let taken = self.last_mode != GameMode::Normal && mode == GameMode::Normal;
+        self.last_mode = mode;
         let extra = scenario.end_when.iter().any(|c| match c {
+            EndCondition::Save => saved,
+            EndCondition::KeeperHoldsBall => game.in_hands && game.owner.is_some(),
+            EndCondition::RestartTaken => taken,
             EndCondition::Steps(n) => steps >= *n,
             EndCondition::BallIn(region) => region.contains(ball[0], ball[1]),
             // Scripts run in the env's hooks, which read the same step (see `Env::step`).
@@ -42,10 +55,57 @@ impl EndTracker {
         scored || out || lost || extra
     }
 
-    /// Starts tracking a new episode from its first observation.
-    pub(crate) fn reset(&mut self, owner: Option<Side>) {
+    /// Starts tracking a new episode from its first observation: `owner`, the team with the ball,
+    /// and `mode`, the game mode it starts in.
+    pub(crate) fn reset(&mut self, owner: Option<Side>, mode: GameMode) {
         self.previous_mode = None;
         self.previous_owner = owner;
+        self.last_mode = mode;
+        self.shot = None;
+    }
+
+    /// Whether a goalkeeper saved a shot during the last step: the shot of one team, touched
+    /// by nobody else since, was next touched by the other team's keeper and did not go in. A
+    /// keeper who catches it, takes it at his feet or parries it over a line saves it at once; one
+    /// who only deflects it saves it once the ball is no longer heading into his goal (a
+    /// fingertip that the ball beats is a goal, not a save).
+    fn saved(&mut self, game: &Match) -> bool {
+        let keeper = |side: Side, player: usize| game.team(side).get(player).is_some_and(|p| p.is_keeper());
+        let mut saved = false;
+        for event in game.events() {
+            match *event {
+                Event::Shot { side, .. } => {
+                    self.shot = Some(side);
+                    saved = false;
+                }
+                Event::PossessionWon { side, player, .. } | Event::OutOfPlay { side, player: Some(player) }
+                    if self.shot.is_some_and(|s| s != side) && keeper(side, player) =>
+                {
+                    saved = true;
+                    self.shot = None;
+                }
+                Event::Goal { .. } => {
+                    saved = false;
+                    self.shot = None;
+                }
+                Event::OutOfPlay { .. } | Event::PossessionWon { .. } | Event::Restart { .. } => self.shot = None,
+                _ => {}
+            }
+        }
+        if let Some(shooting) = self.shot {
+            match game.last_touch() {
+                Some((side, player)) if side != shooting && keeper(side, player) => {
+                    if !crate::rules::goal::on_target(game.ball()) {
+                        saved = true;
+                        self.shot = None;
+                    }
+                }
+                Some((side, _)) if side == shooting => {}
+                // Touched by an outfield defender (a block), or nobody has it any more.
+                _ => self.shot = None,
+            }
+        }
+        saved
     }
 }
 
@@ -90,7 +150,7 @@ mod tests {
         let mut g = game();
         let s = Scenario { end_episode_on_possession_change: true, ..Scenario::default() };
         let mut t = EndTracker::default();
-        t.reset(Some(Side::Left));
+        t.reset(Some(Side::Left), GameMode::Normal);
         assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1));
         assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, Some(Side::Left), [0.0; 2]), 1));
         assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1));

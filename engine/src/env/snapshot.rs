@@ -76,8 +76,10 @@ impl Snapshot {
     /// Version of the byte format written by [`Snapshot::to_bytes`]; bumped whenever the state's
     /// layout changes. Reading another version is an error. Version 9 carries extra bytes (the
     /// Python env's frame stacks) inside the checksummed payload; version 10 adds each player's
-    /// queued first-time shot and blocked ball control (an agent's buttons at a loose ball).
-    pub const FORMAT_VERSION: u16 = 10;
+    /// queued first-time shot and blocked ball control (an agent's buttons at a loose ball);
+    /// version 11 the end conditions' memory of a live shot and of the last game mode (`save`,
+    /// `restart_taken`).
+    pub const FORMAT_VERSION: u16 = 11;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {

@@ -134,11 +134,15 @@ impl Match {
         let Placement { left, right, ball, .. } = placement;
         let difficulty = [scenario.left_team_difficulty, scenario.right_team_difficulty];
         let mut players = Vec::with_capacity(left.len() + right.len());
+        let ball_start = ball_start_to_world(ball[0], ball[1]);
         for (side, entries) in [(Side::Left, &left), (Side::Right, &right)] {
             for (i, e) in entries.iter().enumerate() {
                 let position = formation_to_world(side, e.x, e.y);
                 let home = TeamFrame::of(side).vec2(position);
                 let mut p = Player::new(side, i, e.role, position, home);
+                if let Some(facing) = e.facing {
+                    p.facing = facing.direction(side, position, ball_start, p.facing);
+                }
                 p.lazy = e.lazy;
                 p.controllable = e.controllable;
                 p.attributes = crate::player::Attributes::for_slot(i);
@@ -152,7 +156,6 @@ impl Match {
         let (seed, noisy) =
             if scenario.deterministic { (scenario.game_engine_random_seed, false) } else { (seed, true) };
         let n = players.len();
-        let ball_start = ball_start_to_world(ball[0], ball[1]);
         let nearest = |side: Side| {
             players
                 .iter()
@@ -204,7 +207,18 @@ impl Match {
             env_steps: 0,
         };
         game.install_behaviours(&left, &right);
+        if let Some(start) = &scenario.start_with {
+            game.start_with(start.restart());
+        }
         game
+    }
+
+    /// Sets up `restart` as the referee does when its dead time is over (the players as placed
+    /// decide who takes it and who must stand back), as the episode's first moment.
+    fn start_with(&mut self, restart: Restart) {
+        crate::rules::set_up_restart(self, restart);
+        self.set_piece_ticks = 0;
+        self.record(Event::Restart { side: restart.side, mode: restart.mode });
     }
 
     /// Counts `event` in the statistics and lists it in this step's events.

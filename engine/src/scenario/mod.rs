@@ -13,6 +13,7 @@ mod curriculum;
 mod event_reward;
 mod placement;
 mod random;
+mod start;
 mod terms;
 
 use serde::{Deserialize, Serialize};
@@ -23,6 +24,7 @@ pub use curriculum::{Criterion, Curriculum, EpisodeResult, Lesson, Metric, Thres
 pub use event_reward::{EventAtom, EventKind, EventReward, EventStep, EventTeam, MAX_EVENT_GROUP, MAX_EVENT_SEQUENCE};
 pub use placement::{Anchor, Body, MAX_PLACEMENT_TRIES, Placement, Require, relative_cycle};
 pub use random::{Distribution, PITCH_HALF_LENGTH, PITCH_HALF_WIDTH, Region, Sample, Shared, Spot};
+pub use start::{Facing, StartRestart};
 pub use terms::{EndCondition, RewardKind, RewardTerm};
 
 pub use crate::player::MAX_PLAYERS_PER_TEAM;
@@ -102,6 +104,11 @@ pub struct Scenario {
     /// saved match must have as many players a side as the teams here (`.tl`: `start from "file"`).
     #[serde(default, skip_serializing_if = "Option::is_none", with = "start_state_hex")]
     pub start_state: Option<Vec<u8>>,
+    /// A restart every episode starts from, set up by the referee's own code once the players
+    /// are placed (`.tl`: `start with corner_kick for left at top`); the ball starts on the
+    /// restart's spot, whatever `ball_position` says. Not with `start_state`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start_with: Option<StartRestart>,
     /// Lessons an env plays in order instead of this scenario, moving on when a lesson's
     /// criterion holds (`.tl`: `curriculum { … }`). The fields above are then the base the
     /// lessons were compiled from; an env plays `lessons[0]` first.
@@ -150,6 +157,9 @@ pub struct PlayerEntry {
     /// stages played in order (empty: the built-in AI). `.tl`: `CB at (…) does press`.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub behaviour: Vec<Stage>,
+    /// Which way he faces at the start (default: the goal he attacks). `.tl`: `facing ball`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub facing: Option<Facing>,
 }
 
 fn yes() -> bool {
@@ -166,7 +176,7 @@ fn is_default_seed(seed: &u64) -> bool {
 impl PlayerEntry {
     /// A non-lazy, controllable player.
     pub fn new(role: Role, x: f32, y: f32) -> PlayerEntry {
-        PlayerEntry { role, x, y, random: None, lazy: false, controllable: true, behaviour: Vec::new() }
+        PlayerEntry { role, x, y, random: None, lazy: false, controllable: true, behaviour: Vec::new(), facing: None }
     }
 }
 
@@ -197,6 +207,7 @@ impl Default for Scenario {
             rewards: Vec::new(),
             end_when: Vec::new(),
             start_state: None,
+            start_with: None,
             curriculum: None,
         }
     }
@@ -274,6 +285,11 @@ impl Scenario {
                 if !on_pitch(p.x, p.y) {
                     return bad(format!("{side} player {i} ({}) at ({}, {}) is off the pitch", p.role, p.x, p.y));
                 }
+                if let Some(facing) = &p.facing {
+                    facing
+                        .check()
+                        .map_err(|e| EngineError::InvalidScenario { reason: format!("{side} player {i}: {e}") })?;
+                }
                 if let Some(spot) = &p.random {
                     check_spot(spot, &format!("{side} player {i} ({})", p.role))
                         .map_err(|reason| EngineError::InvalidScenario { reason })?;
@@ -330,6 +346,12 @@ impl Scenario {
                     .check(self.condition_context(false))
                     .map_err(|e| EngineError::InvalidScenario { reason: format!("end when: {e}") })?,
                 _ => {}
+            }
+        }
+        if let Some(start) = &self.start_with {
+            start.check().map_err(|e| EngineError::InvalidScenario { reason: format!("start with: {e}") })?;
+            if self.start_state.is_some() {
+                return bad("a scenario starts either from a saved state or with a restart, not both".into());
             }
         }
         if let Some(c) = &self.curriculum {

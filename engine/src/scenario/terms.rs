@@ -63,6 +63,15 @@ pub enum EndCondition {
     /// A condition of the condition language holds (global frame; `Target::Me` and
     /// `Condition::Done` are not allowed here).
     When(super::Condition),
+    /// A goalkeeper saved a shot: the shot of one team, touched by nobody else since, was caught,
+    /// taken, parried out or deflected away from goal by the other team's keeper (`.tl`: `save`).
+    Save,
+    /// A goalkeeper holds the ball in his hands (`.tl`: `keeper_holds_ball`).
+    KeeperHoldsBall,
+    /// The pending restart was taken: the game mode was a set piece after the previous step (or
+    /// at the episode's start) and is open play now (`.tl`: `restart_taken`). A kickoff counts as
+    /// taken on its first tick (see `rules::kickoff`), so it never ends an episode this way.
+    RestartTaken,
 }
 
 impl RewardTerm {

@@ -181,23 +181,23 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             StatementKind::End(conditions) => deferred.ends = condition::end_when(conditions, s, r),
             StatementKind::StartFrom(path) => {
                 if let Some(with) = start_with_span {
-                    both_starts(with, st.span, r);
+                    super::start::both_starts(with, st.span, r);
                     continue;
                 }
                 start_from_span = Some(st.span);
                 s.start_with = None;
                 origins.start_with = None;
-                start_from(path, s, r);
+                super::start::start_from(path, s, r);
             }
             StatementKind::StartWith(w) => {
                 if let Some(from) = start_from_span {
-                    both_starts(st.span, from, r);
+                    super::start::both_starts(st.span, from, r);
                     continue;
                 }
                 start_with_span = Some(st.span);
                 s.start_state = None;
                 origins.start_with = Some(Loc { source: r.source.clone(), span: st.span });
-                super::start_with::start_with(w, st.span, s, r);
+                super::start::start_with(w, st.span, s, r);
             }
             // Read by the compiler: parameters before the body, a curriculum and its criteria
             // after the scenario is complete.
@@ -210,7 +210,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
     // Behaviours, conditions, requires and relative places name players, so they are read once
     // this body's teams are in place.
     super::relative::resolve(&deferred.places, s, r);
-    super::start_with::ball_on_the_spot(s);
+    super::start::ball_on_the_spot(s);
     behaviours(&deferred, s, r);
     for &(k, c) in &deferred.ends {
         if let Some(c) = condition::condition(c, Context::End, s, r) {
@@ -228,40 +228,6 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             s.requires.push(req);
             origins.requires.push(Loc { source: r.source.clone(), span: st.span });
         }
-    }
-}
-
-/// `tl::E153`: `start with` and `start from` in one definition.
-fn both_starts(with: Span, from: Span, r: &mut Reader<'_>) {
-    r.diags.push(
-        Diagnostic::new(
-            Code::RestartShape,
-            "a scenario starts either with a restart or from a saved state, not both",
-            r.source,
-            with,
-            "a restart",
-        )
-        .with_label(from, "a saved state")
-        .with_help("keep one of the two statements"),
-    );
-}
-
-/// `start from "file"`: the saved state's bytes, read relative to the scenario file.
-fn start_from(path: &syntax::Spanned<String>, s: &mut Scenario, r: &mut Reader<'_>) {
-    let origin = std::path::Path::new(r.source.name());
-    let full = origin.parent().unwrap_or(std::path::Path::new("")).join(&path.value);
-    match crate::source_file::read_regular(&full, crate::source_file::MAX_SOURCE_BYTES) {
-        Ok(bytes) => s.start_state = Some(bytes),
-        Err(e) => r.error_help(
-            Code::StartState,
-            format!("cannot read the saved state `{}`: {}", path.value, super::io_reason(&e)),
-            path.span,
-            "not readable",
-            format!(
-                "the path is relative to this file ({}); save a state with env.unwrapped.get_state() in Python",
-                full.display()
-            ),
-        ),
     }
 }
 
@@ -431,7 +397,7 @@ fn team<'d>(
                 Flag::Lazy => e.lazy = true,
                 Flag::Controllable => e.controllable = true,
                 Flag::NotControllable => e.controllable = false,
-                Flag::Facing(value) => e.facing = super::start_with::facing(value, r),
+                Flag::Facing(value) => e.facing = super::start::facing(value, r),
             }
         }
         if let Some(b) = &p.behaviour {

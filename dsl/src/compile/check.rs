@@ -24,7 +24,7 @@ pub(super) fn check(s: &Scenario, o: &Origins, source: &Source, name_span: Span,
     if let (Some(restart), Some(with), Some(ball)) = (&s.start_with, &o.start_with, &o.ball)
         && ball.source.name() == with.source.name()
     {
-        let name = super::start_with::restart_name(restart.mode);
+        let name = super::start::restart_name(restart.mode);
         diags.push(
             Diagnostic::new(
                 Code::BallReplaced,

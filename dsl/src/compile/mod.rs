@@ -12,9 +12,9 @@ mod events;
 mod params;
 mod pitch;
 mod relative;
-mod start_with;
+mod start;
 
-pub(crate) use start_with::restart_name;
+pub(crate) use start::restart_name;
 mod value;
 
 use std::collections::HashMap;

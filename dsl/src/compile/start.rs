@@ -1,12 +1,12 @@
-//! `start with RESTART for TEAM [at PLACE]` (every episode starts from a restart the referee sets
-//! up) and a player's `facing …` flag.
+//! How episodes start: `start from "file"` (a saved match), `start with RESTART for TEAM [at
+//! PLACE]` (a restart the referee sets up) and a player's `facing …` flag.
 
 use touchline_engine::geometry::coords::world_to_obs;
 use touchline_engine::scenario::{Facing, StartRestart};
 use touchline_engine::{GameMode, Scenario, Side};
 
 use super::value::{Frame, Reader, suggest_help};
-use crate::diagnostic::Code;
+use crate::diagnostic::{Code, Diagnostic};
 use crate::suggest;
 use crate::syntax::{self, Expr, ExprKind, Span};
 
@@ -23,6 +23,40 @@ const RESTARTS: [(&str, GameMode); 6] = [
 /// The `.tl` name of a restart's game mode (`Corner` is `corner_kick`).
 pub(crate) fn restart_name(mode: GameMode) -> &'static str {
     RESTARTS.iter().find(|(_, m)| *m == mode).map_or("kickoff", |(n, _)| n)
+}
+
+/// `tl::E153`: `start with` and `start from` in one definition.
+pub(crate) fn both_starts(with: Span, from: Span, r: &mut Reader<'_>) {
+    r.diags.push(
+        Diagnostic::new(
+            Code::RestartShape,
+            "a scenario starts either with a restart or from a saved state, not both",
+            r.source,
+            with,
+            "a restart",
+        )
+        .with_label(from, "a saved state")
+        .with_help("keep one of the two statements"),
+    );
+}
+
+/// `start from "file"`: the saved state's bytes, read relative to the scenario file.
+pub(crate) fn start_from(path: &syntax::Spanned<String>, s: &mut Scenario, r: &mut Reader<'_>) {
+    let origin = std::path::Path::new(r.source.name());
+    let full = origin.parent().unwrap_or(std::path::Path::new("")).join(&path.value);
+    match crate::source_file::read_regular(&full, crate::source_file::MAX_SOURCE_BYTES) {
+        Ok(bytes) => s.start_state = Some(bytes),
+        Err(e) => r.error_help(
+            Code::StartState,
+            format!("cannot read the saved state `{}`: {}", path.value, super::io_reason(&e)),
+            path.span,
+            "not readable",
+            format!(
+                "the path is relative to this file ({}); save a state with env.unwrapped.get_state() in Python",
+                full.display()
+            ),
+        ),
+    }
 }
 
 /// Reads a `start with` statement into `s.start_with` (spans for the diagnostics: `span` is the

@@ -141,3 +141,61 @@ fn mp4_through_ffmpeg_when_installed() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issue 19: the replay of a scenario with a reward script carries the script's text, so that
+/// `replay` and `view` re-simulate it (they refused it before: "needs script hooks"), even with
+/// the script file gone.
+#[test]
+fn replays_of_scripted_scenarios_draw_and_view_without_the_script_files() {
+    let dir = scratch("scripted");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    // A copy of the example and its script, removed once recorded.
+    std::fs::create_dir_all(dir.join("scenarios")).expect("dir");
+    std::fs::create_dir_all(dir.join("rewards")).expect("dir");
+    for f in ["scenarios/run_to_score_shaped.tl", "rewards/distance_to_goal.rhai"] {
+        std::fs::copy(root.join("examples").join(f), dir.join(f)).expect("copy");
+    }
+    let record = dir.join("record");
+    let scenario = dir.join("scenarios/run_to_score_shaped.tl");
+    let out = touchline(&["run", s(&scenario), "--episodes", "2", "--policy", "random", "--record", s(&record)]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    std::fs::remove_file(dir.join("rewards/distance_to_goal.rhai")).expect("remove the script");
+    let replay = record.join("run_to_score_shaped_seed0_ep1.tlreplay");
+    let out = touchline(&["replay", s(&replay), "-o", s(&dir.join("frames")), "--width", "32", "--height", "24"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let page = dir.join("view.html");
+    let out = touchline(&["view", s(&record), "--html", s(&page)]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let html = std::fs::read_to_string(&page).expect("page");
+    assert!(html.contains("run_to_score_shaped_seed0_ep1"));
+    // The goal clips of a scripted scenario re-simulate too (`--record-goals` cuts them).
+    let goals = dir.join("goals");
+    std::fs::copy(root.join("examples/rewards/distance_to_goal.rhai"), dir.join("rewards/distance_to_goal.rhai"))
+        .expect("copy");
+    let out = touchline(&[
+        "run",
+        s(&scenario),
+        "--episodes",
+        "3",
+        "--policy",
+        "builtin",
+        "--record",
+        s(&goals),
+        "--record-goals",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let clips = files(&goals);
+    assert!(!clips.is_empty(), "the built-in AI scores in run to score");
+    let out = touchline(&[
+        "replay",
+        s(&goals.join(&clips[0])),
+        "-o",
+        s(&dir.join("clip")),
+        "--width",
+        "32",
+        "--height",
+        "24",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -197,3 +197,59 @@ fn colour_counts(path: &Path) -> Counts {
     }
     c
 }
+
+/// Issue 19: an agent's replay with per-step values (as Python's `record_values` attaches them):
+/// the page lists each controlled player's action and reward and the values of the step shown,
+/// and zooms to the drill.
+#[test]
+fn viewer_shows_each_steps_actions_rewards_and_recorded_values() {
+    use touchline_render::replay::Recorder;
+    let Some(browser) = browser_or_skip() else { return };
+    let dir = scratch("values");
+    let path = format!("{}/../stdlib-scenarios/academy_3_vs_1_with_keeper.json", env!("CARGO_MANIFEST_DIR"));
+    let scenario: Scenario = serde_json::from_str(&std::fs::read_to_string(path).expect("scenario")).expect("json");
+    let config = touchline_engine::EnvConfig { left_agents: 2, ..Default::default() };
+    let mut env = Env::with_config(scenario, config, 4).expect("env");
+    let mut recorder = Recorder::start(&env);
+    let plan = [[Action::Right, Action::TopRight], [Action::ShortPass, Action::Right], [Action::Sprint, Action::Shot]];
+    let mut rewards = Vec::new();
+    for (k, actions) in plan.iter().cycle().take(12).enumerate() {
+        recorder.value("value", 0.125 * k as f32);
+        if k == 4 {
+            recorder.value("p_shot", 0.75);
+        }
+        let out = env.step(actions).expect("step");
+        recorder.record(&env, actions);
+        rewards.push(env.rewards().to_vec());
+        if out.terminated || out.truncated {
+            break;
+        }
+    }
+    assert!(recorder.steps() >= 6, "the drill lasts 6 steps");
+    recorder.finish().save(&dir.join("agent.tlreplay")).expect("save");
+    let page = dir.join("viewer.html");
+    touchline(&["view", dir.to_str().expect("utf-8"), "--html", page.to_str().expect("utf-8")]);
+    let url = format!("file://{}?replay=agent&frame=5", page.display());
+    let dom = headless(&browser, &dir.join("profile"), &["--dump-dom"], &url);
+    // Frame 5 shows the state after step 5 (0-based 4, the plan's second pair): its actions,
+    // rewards and values.
+    assert_eq!(text_of(&dom, "step-action-0"), "short_pass");
+    assert_eq!(text_of(&dom, "step-action-1"), "right");
+    assert_eq!(text_of(&dom, "step-reward-0"), format!("{:.3}", rewards[4][0]));
+    assert_eq!(text_of(&dom, "step-reward-1"), format!("{:.3}", rewards[4][1]));
+    assert_eq!(text_of(&dom, "value-value"), "0.500");
+    assert_eq!(text_of(&dom, "value-p_shot"), "0.750");
+    let dom = headless(&browser, &dir.join("profile"), &["--dump-dom"], &url.replace("frame=5", "frame=3"));
+    assert_eq!(text_of(&dom, "value-p_shot"), "\u{2014}", "no value given at that step");
+    assert!(!dom.contains("id=\"zoom-control\" hidden"), "a drill offers the zoom");
+
+    // Zoomed to the drill, the players are drawn larger than on the whole pitch: more team colour
+    // (the scoreboard's team squares are the same size in both).
+    let zoomed = dir.join("zoomed.png");
+    let whole = dir.join("whole.png");
+    headless(&browser, &dir.join("profile"), &[&format!("--screenshot={}", zoomed.display())], &url);
+    headless(&browser, &dir.join("profile"), &[&format!("--screenshot={}", whole.display())], &format!("{url}&zoom=0"));
+    let (z, w) = (colour_counts(&zoomed), colour_counts(&whole));
+    assert!(2 * z.red > 3 * w.red, "zoomed {z:?}, whole pitch {w:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

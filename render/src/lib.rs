@@ -10,7 +10,8 @@
 //!   scoreboard (score, match clock, game mode). A frame depends only on the scene and the size;
 //! - [`PixelsEncoder`] gives the `pixels` (RGB) and `pixels_gray` observations (grf.md §4.3);
 //! - [`replay`] records episodes into a compact, versioned, checksummed file and plays them back,
-//!   re-simulating bit for bit.
+//!   re-simulating bit for bit;
+//! - [`video`] draws a replay into an animated GIF, an MP4 (through `ffmpeg`) or PNG frames.
 
 #![deny(missing_docs)]
 
@@ -22,6 +23,7 @@ mod pixels;
 mod renderer;
 pub mod replay;
 mod scene;
+pub mod video;
 
 pub use pixels::{PIXELS_HEIGHT, PIXELS_WIDTH, PixelsEncoder, PixelsKind};
 pub use renderer::{MAX_SIDE, RenderError, RenderOptions, Renderer};

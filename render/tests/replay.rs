@@ -169,3 +169,51 @@ fn clips_round_goals_reproduce_on_their_own() {
     assert!(replay.clip(5, 4).is_err());
     assert!(replay.clip(0, replay.steps() + 1).is_err());
 }
+
+#[test]
+fn step_values_and_script_texts_round_trip_and_clip() {
+    let mut env = Env::new(scenario("academy_empty_goal_close"), 3).expect("env");
+    let mut recorder = Recorder::start(&env).with_scripts([("a.rhai".to_owned(), "fn reward(s) { 0.0 }".to_owned())]);
+    let mut k = 0;
+    loop {
+        // A value on every step, a second one only on odd steps (NaN elsewhere), from step 1.
+        recorder.value("value", k as f32 * 0.5);
+        if k % 2 == 1 {
+            recorder.value("p_shot", 0.25);
+        }
+        let out = env.step(&[Action::Right]).expect("step");
+        recorder.record(&env, &[Action::Right]);
+        k += 1;
+        if out.terminated || out.truncated || k == 30 {
+            break;
+        }
+    }
+    let replay = recorder.finish();
+    let back = Replay::from_bytes(&replay.to_bytes()).expect("reads");
+    assert_eq!(back.scripts, replay.scripts);
+    assert_eq!(back.scripts[0].path, "a.rhai");
+    let value = &back.values.iter().find(|v| v.name == "value").expect("value series").values;
+    assert_eq!(value.len(), back.steps());
+    assert!(value.iter().enumerate().all(|(i, &v)| v == i as f32 * 0.5));
+    let p = &back.values.iter().find(|v| v.name == "p_shot").expect("p_shot series").values;
+    assert!(p[0].is_nan() && p[1] == 0.25 && p[2].is_nan());
+    let clip = back.clip(4, 10).expect("clip");
+    assert_eq!(clip.values[0].values, value[4..10]);
+
+    // Saved whole through a temporary file, and read back the same.
+    let dir = std::env::temp_dir().join(format!("touchline-render-save-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    let path = dir.join("ep.tlreplay");
+    back.save(&path).expect("save");
+    assert_eq!(std::fs::read(&path).expect("read"), back.to_bytes());
+    assert_eq!(std::fs::read_dir(&dir).expect("list").count(), 1, "no temporary file is left behind");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn values_of_the_wrong_length_are_refused() {
+    let mut env = Env::new(scenario("academy_empty_goal_close"), 0).expect("env");
+    let mut r = record_episode(&mut env);
+    r.values.push(touchline_render::replay::StepValues { name: "v".into(), values: vec![0.0; r.steps() + 1] });
+    assert!(matches!(Replay::from_bytes(&r.to_bytes()), Err(ReplayError::Inconsistent { .. })));
+}

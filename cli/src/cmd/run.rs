@@ -12,6 +12,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 use serde::Serialize;
+use touchline_dsl::script::{ScriptOptions, Scripts};
 use touchline_engine::{Action, ActionSet, EngineError, EnvConfig, Scenario};
 use touchline_render::replay::{Recorder, Replay};
 
@@ -256,10 +257,15 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
     let controllable = first.controllable_every_episode();
     let expected_steps = u64::from(first.game_duration) + 1;
     let dir = touchline_dsl::script_dir(&args.scenario);
-    let mut env = touchline_dsl::build_env(scenario, &dir, config, args.seed).map_err(|e| match e {
+    let scripts = Scripts::compile(&scenario, &dir, ScriptOptions::default())
+        .map_err(|e| CliError::Build(touchline_dsl::BuildError::Scripts(e)))?;
+    // Replays carry the scripts' text, so that they re-simulate without the files.
+    let script_sources: Vec<(String, String)> =
+        scripts.sources().map(|(path, text)| (path.to_owned(), text.to_owned())).collect();
+    let mut env = touchline_dsl::attach(&scripts, scenario, config, args.seed).map_err(|e| match e {
         // A script failing at the first reset is the script's error, not the configuration's.
-        touchline_dsl::BuildError::Engine(EngineError::Script { message }) => CliError::Script { episode: 0, message },
-        touchline_dsl::BuildError::Engine(source) => CliError::Config {
+        EngineError::Script { message } => CliError::Script { episode: 0, message },
+        source => CliError::Config {
             scenario: args.scenario.clone(),
             help: format!(
                 "this scenario has {} controllable left and {} controllable right players; \
@@ -268,7 +274,6 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
             ),
             source,
         },
-        other => CliError::Build(other),
     })?;
 
     let mut out = io::stdout().lock();
@@ -295,7 +300,8 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
                 bar.suspend(|| writeln!(out, "{line}"))?;
             }
         }
-        let mut recorder = (args.record.is_some() && i % args.record_every == 0).then(|| Recorder::start(&env));
+        let mut recorder = (args.record.is_some() && i % args.record_every == 0)
+            .then(|| Recorder::start(&env).with_scripts(script_sources.iter().cloned()));
         let mut reward = 0.0_f64;
         let outcome = loop {
             agent.act(&mut actions);
@@ -420,17 +426,18 @@ fn save_replays(dir: &std::path::Path, replay: &Replay, goals_only: bool) -> Res
     let mut parts = Vec::new();
     if goals_only {
         for g in replay.goal_frames() {
-            let clip = replay
-                .clip(g.saturating_sub(100), (g + 1).min(replay.steps()))
-                .map_err(|source| CliError::Replay { path: dir.join(&stem), source })?;
-            parts.push((dir.join(format!("{stem}_goal{g}.tlreplay")), clip.to_bytes()));
+            let clip = crate::cmd::replay::hooks(replay).and_then(|hooks| {
+                replay
+                    .clip_with(hooks, g.saturating_sub(100), (g + 1).min(replay.steps()))
+                    .map_err(|source| CliError::Replay { path: dir.join(&stem), source })
+            })?;
+            parts.push((dir.join(format!("{stem}_goal{g}.tlreplay")), clip));
         }
-    } else {
-        parts.push((dir.join(format!("{stem}.tlreplay")), replay.to_bytes()));
     }
     let mut written = Vec::new();
-    for (path, bytes) in parts {
-        std::fs::write(&path, bytes).map_err(|source| CliError::Write { path: path.clone(), source })?;
+    let whole = (!goals_only).then(|| (dir.join(format!("{stem}.tlreplay")), replay));
+    for (path, part) in parts.iter().map(|(p, r)| (p.clone(), r)).chain(whole) {
+        part.save(&path).map_err(|source| CliError::Write { path: path.clone(), source })?;
         written.push(path);
     }
     Ok(written)

@@ -3,8 +3,13 @@
 //! The viewer is one static page (`viewer.html`, embedded in the binary) that draws the match on a
 //! canvas with play/pause, speed, step and scrub controls, and shows the observation of the
 //! controlled player (controller 0) at every step: its Super Mini Map and the raw observation's
-//! scalars, with the action it took and its reward. The data comes from re-simulating each replay
-//! (so a replay that does not reproduce is refused).
+//! scalars. Per step it lists the action every controlled player took and its reward, and the
+//! numbers the recorder attached (`record_values` in Python: a value estimate, action
+//! probabilities). The pitch shows the step counter and the game mode, the ball's height (its
+//! lift above its shadow, and in metres while in the air), and in a drill (a scenario that ends
+//! when the ball goes out of play, as GRF's Academy) zooms to where the play happens. The data
+//! comes from re-simulating each replay (so a replay that does not reproduce is refused), with the
+//! scenario's scripts compiled from the text the replay carries.
 //!
 //! - `touchline view DIR` serves the page and the replays of `DIR` on `http://127.0.0.1:PORT/`
 //!   (`/replays.json` lists them, `/replay/NAME.json` gives one).
@@ -71,6 +76,27 @@ struct ViewData {
     mode: Vec<&'static str>,
     /// Controller 0's observation per frame.
     obs: Vec<ObsRow>,
+    /// Side of each controller (`"left"` / `"right"`), left controllers first.
+    controller_sides: Vec<&'static str>,
+    /// Per frame, the GRF name of the action each controller took in the step that led to it
+    /// (empty for frame 0).
+    actions: Vec<Vec<&'static str>>,
+    /// Per frame, each controller's reward for the step that led to it (empty for frame 0).
+    rewards: Vec<Vec<f32>>,
+    /// The recorder's named per-step numbers; `values[k]` belongs to the step leading to frame
+    /// `k + 1`, `null` where none was given.
+    values: Vec<ViewValues>,
+    /// The scenario is a drill (it ends when the ball goes out of play, as GRF's Academy): the
+    /// page zooms to where the play happens.
+    drill: bool,
+}
+
+/// One named series of per-step numbers, as the page reads it.
+#[derive(Debug, Serialize)]
+struct ViewValues {
+    name: String,
+    /// NaN becomes `null` in JSON.
+    values: Vec<f32>,
 }
 
 /// The scalars of controller 0's raw observation after a frame, and what led to it.
@@ -93,10 +119,16 @@ struct ObsRow {
 fn view_data(name: &str, path: &Path, replay: &Replay) -> Result<ViewData, CliError> {
     let m = |cm: i16| f32::from(cm) / 100.0;
     let mut obs = Vec::with_capacity(replay.frames.len());
+    let mut rewards = Vec::with_capacity(replay.frames.len());
+    let mut sides = Vec::new();
     let mut side = Side::Left;
     replay
-        .simulate(|env: &Env, k| {
+        .simulate_with(crate::cmd::replay::hooks(replay)?, |env: &Env, k| {
             side = env.controller_sides().next().unwrap_or(Side::Left);
+            if k == 0 {
+                sides = env.controller_sides().map(Side::name).collect();
+            }
+            rewards.push(if k == 0 { Vec::new() } else { env.rewards().to_vec() });
             let o = &env.observations()[0];
             obs.push(ObsRow {
                 action: if k == 0 { String::new() } else { format!("{:?}", replay.step_actions(k - 1)[0]) },
@@ -131,6 +163,13 @@ fn view_data(name: &str, path: &Path, replay: &Replay) -> Result<ViewData, CliEr
             .map(|f| touchline_engine::GameMode::ALL.get(usize::from(f.mode)).copied().unwrap_or_default().name())
             .collect(),
         obs,
+        controller_sides: sides,
+        actions: (0..=replay.steps())
+            .map(|k| if k == 0 { Vec::new() } else { replay.step_actions(k - 1).iter().map(|a| a.name()).collect() })
+            .collect(),
+        rewards,
+        values: replay.values.iter().map(|v| ViewValues { name: v.name.clone(), values: v.values.clone() }).collect(),
+        drill: replay.scenario.end_episode_on_out_of_play,
     })
 }
 

@@ -183,6 +183,48 @@ impl Scripts {
     /// Every problem at once: unreadable files (`tl::S001`), syntax (`tl::S002`), a missing or
     /// wrong hook (`tl::S003`), a top level that is not only `fn`s and `const`s (`tl::S004`).
     pub fn compile(scenario: &Scenario, dir: &Path, options: ScriptOptions) -> Result<Scripts, ScriptErrors> {
+        Scripts::compile_with(scenario, options, |path| {
+            let file = dir.join(path);
+            let text = file::read_script(&file)
+                .map_err(|source| ScriptError::Unreadable { path: file.display().to_string(), source });
+            (Some(file), text)
+        })
+    }
+
+    /// Compiles every script `scenario` names from texts held in memory (`sources`: the path as
+    /// the scenario names it, and the text), for instance the scripts a replay carries.
+    ///
+    /// # Errors
+    /// As [`Scripts::compile`]; a script missing from `sources` is `tl::S001` (unreadable).
+    pub fn from_sources<'a>(
+        scenario: &Scenario,
+        sources: impl IntoIterator<Item = (&'a str, &'a str)>,
+        options: ScriptOptions,
+    ) -> Result<Scripts, ScriptErrors> {
+        let sources: Vec<(&str, &str)> = sources.into_iter().collect();
+        Scripts::compile_with(scenario, options, |path| {
+            let text = sources.iter().find(|(p, _)| *p == path).map(|(_, t)| (*t).to_owned()).ok_or_else(|| {
+                ScriptError::Unreadable {
+                    path: path.to_owned(),
+                    source: std::io::Error::new(std::io::ErrorKind::NotFound, "its text was not given"),
+                }
+            });
+            (None, text)
+        })
+    }
+
+    /// The path (as the scenario names it) and text of every script, in the order compiled.
+    pub fn sources(&self) -> impl Iterator<Item = (&str, &str)> {
+        self.set.scripts.iter().map(|s| (s.path.as_str(), s.text.as_str()))
+    }
+
+    /// Compiles the scripts `scenario` names, reading each one's text with `read` (given the path
+    /// as the scenario names it; returns the resolved file, if any, and the text).
+    fn compile_with(
+        scenario: &Scenario,
+        options: ScriptOptions,
+        mut read: impl FnMut(&str) -> (Option<PathBuf>, Result<String, ScriptError>),
+    ) -> Result<Scripts, ScriptErrors> {
         // With a curriculum the env plays the lessons, which all run the same scripts (checked
         // when compiling): the first lesson's are the ones to load.
         let scenario = scenario.curriculum.as_ref().and_then(|c| c.lessons.first()).map_or(scenario, |l| &l.scenario);
@@ -207,12 +249,12 @@ impl Scripts {
         let mut errors = Vec::new();
         let mut files = Vec::new();
         for (path, role) in wanted {
-            let file = dir.join(&path);
-            files.push(file.clone());
-            let text = match file::read_script(&file) {
+            let (file, text) = read(&path);
+            files.extend(file);
+            let text = match text {
                 Ok(text) => text,
-                Err(source) => {
-                    errors.push(ScriptError::Unreadable { path: file.display().to_string(), source });
+                Err(e) => {
+                    errors.push(e);
                     continue;
                 }
             };
@@ -257,6 +299,12 @@ impl Scripts {
     /// Fresh hooks for one env (empty `memory`).
     pub fn hooks(&self) -> ScriptHooks {
         ScriptHooks::new(Arc::clone(&self.set))
+    }
+
+    /// Fresh hooks for one env as the engine takes them, or `None` when there are no scripts
+    /// (as [`crate::attach`] chooses between `Env::with_hooks` and `Env::with_config`).
+    pub fn engine_hooks(&self) -> Option<Box<dyn touchline_engine::Hooks>> {
+        (!self.is_empty()).then(|| Box::new(self.hooks()) as Box<dyn touchline_engine::Hooks>)
     }
 }
 

@@ -13,9 +13,12 @@ use super::{Frame, Replay};
 
 /// Bytes every replay file starts with.
 pub const MAGIC: &[u8; 8] = b"TLREPLAY";
-/// Version of the format written; bumped whenever [`Replay`]'s layout changes. Reading another
-/// version is an error.
-pub const FORMAT_VERSION: u16 = 1;
+/// Version of the format written; bumped whenever [`Replay`]'s layout changes. Version 2 added the
+/// scripts' text and the recorder's per-step values; version 1 files are still read (with neither).
+/// Reading any other version is an error.
+pub const FORMAT_VERSION: u16 = 2;
+/// The oldest version read.
+const OLDEST_VERSION: u16 = 1;
 /// Header size in bytes.
 const HEADER: usize = 8 + 2 + 8 + 8;
 /// Largest decompressed payload accepted (bytes): a 3000-step 11-v-11 episode is about 0.4 MB, so
@@ -30,7 +33,7 @@ pub enum ReplayError {
     #[error("not a touchline replay (it does not start with the `TLREPLAY` header)")]
     NotAReplay,
     /// Written by another format version.
-    #[error("replay format version {found}; this touchline reads version {FORMAT_VERSION}")]
+    #[error("replay format version {found}; this touchline reads versions {OLDEST_VERSION} to {FORMAT_VERSION}")]
     Version {
         /// The file's version.
         found: u16,
@@ -101,6 +104,8 @@ impl Replay {
             actions: &self.actions,
             controllers: self.controllers,
             frames: DeltaFrames(&self.frames),
+            scripts: &self.scripts,
+            values: &self.values,
         };
         let estimate = 256 + self.frames.len() * (self.roster.len() * 3 + 24) + self.actions.len();
         let raw = postcard::to_extend(&stored, Vec::with_capacity(estimate)).unwrap_or_default();
@@ -117,6 +122,22 @@ impl Replay {
         out
     }
 
+    /// Writes the file form to `path` whole or not at all: into a temporary file in the same
+    /// folder, then renamed over `path` (so that a reader never sees half a replay).
+    ///
+    /// # Errors
+    /// The operating system's error when the folder cannot be written.
+    pub fn save(&self, path: &std::path::Path) -> std::io::Result<()> {
+        let dir = match path.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p,
+            _ => std::path::Path::new("."),
+        };
+        let mut file = tempfile::NamedTempFile::new_in(dir)?;
+        file.write_all(&self.to_bytes())?;
+        file.as_file().sync_all()?;
+        file.persist(path).map(|_| ()).map_err(|e| e.error)
+    }
+
     /// Reads the file form.
     ///
     /// # Errors
@@ -129,7 +150,7 @@ impl Replay {
             return Err(ReplayError::Truncated { expected: HEADER as u64, got: bytes.len() as u64 });
         }
         let version = u16::from_le_bytes([bytes[8], bytes[9]]);
-        if version != FORMAT_VERSION {
+        if !(OLDEST_VERSION..=FORMAT_VERSION).contains(&version) {
             return Err(ReplayError::Version { found: version });
         }
         let word = |at: usize| {
@@ -161,8 +182,24 @@ impl Replay {
                 reason: format!("it decompresses to more than {MAX_DECOMPRESSED} bytes"),
             });
         }
-        let read: Loaded =
-            postcard::from_bytes(&raw).map_err(|e| ReplayError::Decode { reason: format!("postcard: {e}") })?;
+        let postcard_error = |e: postcard::Error| ReplayError::Decode { reason: format!("postcard: {e}") };
+        let read: Loaded = if version == 1 {
+            let v1: LoadedV1 = postcard::from_bytes(&raw).map_err(postcard_error)?;
+            Loaded {
+                scenario: v1.scenario,
+                config: v1.config,
+                start: v1.start,
+                first_step: v1.first_step,
+                roster: v1.roster,
+                actions: v1.actions,
+                controllers: v1.controllers,
+                frames: v1.frames,
+                scripts: Vec::new(),
+                values: Vec::new(),
+            }
+        } else {
+            postcard::from_bytes(&raw).map_err(postcard_error)?
+        };
         let scenario = serde_json::from_str(&read.scenario)
             .map_err(|e| ReplayError::Decode { reason: format!("the scenario: {e}") })?;
         let mut replay = Replay {
@@ -174,6 +211,8 @@ impl Replay {
             actions: read.actions,
             controllers: read.controllers,
             frames: read.frames,
+            scripts: read.scripts,
+            values: read.values,
         };
         replay.check()?;
         delta_decode(&mut replay.frames);
@@ -194,11 +233,28 @@ struct Stored<'a> {
     actions: &'a [touchline_engine::Action],
     controllers: usize,
     frames: DeltaFrames<'a>,
+    scripts: &'a [super::ScriptSource],
+    values: &'a [super::StepValues],
 }
 
 /// [`Stored`] as read back (frames still delta-encoded).
 #[derive(serde::Deserialize)]
 struct Loaded {
+    scenario: String,
+    config: touchline_engine::EnvConfig,
+    start: super::Start,
+    first_step: u32,
+    roster: Vec<super::RosterEntry>,
+    actions: Vec<touchline_engine::Action>,
+    controllers: usize,
+    frames: Vec<Frame>,
+    scripts: Vec<super::ScriptSource>,
+    values: Vec<super::StepValues>,
+}
+
+/// Version 1's payload: [`Loaded`] without the scripts and values.
+#[derive(serde::Deserialize)]
+struct LoadedV1 {
     scenario: String,
     config: touchline_engine::EnvConfig,
     start: super::Start,

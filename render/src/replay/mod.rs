@@ -5,11 +5,16 @@
 //! seed and episode index (or a [`Snapshot`] of the state where the recording started) and the
 //! actions of every step, plus what is needed to check and show it without the engine: after
 //! every step, a [`Frame`] (positions to the centimetre, score, mode, ball owner, controlled
-//! players, and a hash of the exact state).
+//! players, and a hash of the exact state). A scenario with rhai scripts (reward terms, end
+//! conditions, behaviours) carries their text ([`ScriptSource`]), so that the replay re-simulates
+//! without the script files; and a recorder may attach named per-step numbers ([`StepValues`]:
+//! a policy's value estimate, action probabilities) that viewers show beside each step.
 //!
 //! [`Replay::simulate`] plays the actions again in a fresh env and checks each step's state hash
 //! and frame against the stored ones: a replay that does not reproduce is an error
-//! ([`ReplayError::Diverged`]), never a silent difference.
+//! ([`ReplayError::Diverged`]), never a silent difference. A scripted scenario needs the scripts'
+//! hooks ([`Replay::simulate_with`]; `touchline_dsl::script::Scripts::from_sources` compiles them
+//! from [`Replay::scripts`]).
 //!
 //! The file form ([`Replay::to_bytes`], [`Replay::from_bytes`]):
 //!
@@ -29,7 +34,7 @@ mod file;
 mod recorder;
 
 use serde::{Deserialize, Serialize};
-use touchline_engine::{Action, Env, EnvConfig, GameMode, Match, Scenario, Side, Snapshot};
+use touchline_engine::{Action, Env, EnvConfig, GameMode, Hooks, Match, Scenario, Side, Snapshot};
 
 pub use file::{FORMAT_VERSION, MAGIC, ReplayError};
 pub use recorder::Recorder;
@@ -59,6 +64,26 @@ pub struct RosterEntry {
     pub number: u8,
     /// Goalkeepers wear their own colour.
     pub goalkeeper: bool,
+}
+
+/// The text of one script the scenario names, as it was when the episode was recorded.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ScriptSource {
+    /// The path as the scenario writes it (`reward script "PATH"`).
+    pub path: String,
+    /// The script's rhai source.
+    pub text: String,
+}
+
+/// Numbers a recorder attached to the steps under one name (for instance a policy's value
+/// estimate), shown by viewers beside each step.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StepValues {
+    /// The name shown (unique within a replay).
+    pub name: String,
+    /// One value per step (`values[k]` belongs to step `k`, the step that leads to frame `k + 1`);
+    /// NaN where the recorder gave none.
+    pub values: Vec<f32>,
 }
 
 /// The state after one step, as stored: enough to draw it and to check a re-simulation.
@@ -103,6 +128,10 @@ pub struct Replay {
     pub controllers: usize,
     /// `frames[0]` is the state at the start, `frames[k]` the state after step `k`.
     pub frames: Vec<Frame>,
+    /// The text of every script the scenario runs (empty for a scenario without scripts).
+    pub scripts: Vec<ScriptSource>,
+    /// Named per-step numbers given by the recorder (empty when none were given).
+    pub values: Vec<StepValues>,
 }
 
 /// Centimetres, saturating at ±327 m (far outside the pitch's 60 m rim).
@@ -188,15 +217,30 @@ impl Replay {
         scene.mode = GameMode::ALL.get(usize::from(frame.mode)).copied().unwrap_or_default();
     }
 
-    /// Builds the env where the recording started.
+    /// Builds the env where the recording started (a scenario without scripts).
     ///
     /// # Errors
-    /// [`ReplayError::Engine`] when the scenario or configuration is refused;
+    /// [`ReplayError::Engine`] when the scenario or configuration is refused (a scripted scenario
+    /// needs [`Replay::start_env_with`]);
     /// [`ReplayError::Start`] when the start snapshot does not load or belongs elsewhere.
     pub fn start_env(&self) -> Result<Env, ReplayError> {
+        self.start_env_with(None)
+    }
+
+    /// Builds the env where the recording started, with `hooks` running the scenario's scripts
+    /// (fresh hooks, for instance compiled from [`Replay::scripts`]; `None` for a scenario
+    /// without scripts).
+    ///
+    /// # Errors
+    /// As [`Replay::start_env`].
+    pub fn start_env_with(&self, hooks: Option<Box<dyn Hooks>>) -> Result<Env, ReplayError> {
+        let build = |seed: u64, hooks: Option<Box<dyn Hooks>>| match hooks {
+            Some(h) => Env::with_hooks(self.scenario.clone(), self.config, seed, h),
+            None => Env::with_config(self.scenario.clone(), self.config, seed),
+        };
         match &self.start {
             Start::Reset { seed, episode } => {
-                let mut env = Env::with_config(self.scenario.clone(), self.config, *seed)?;
+                let mut env = build(*seed, hooks)?;
                 if *episode != 0 {
                     env.reset_to_episode(*seed, *episode)?;
                 }
@@ -204,7 +248,7 @@ impl Replay {
             }
             Start::Snapshot(bytes) => {
                 let snapshot = Snapshot::from_bytes(bytes).map_err(ReplayError::Start)?;
-                let mut env = Env::with_config(self.scenario.clone(), self.config, 0)?;
+                let mut env = build(0, hooks)?;
                 env.restore(&snapshot).map_err(ReplayError::Start)?;
                 Ok(env)
             }
@@ -219,8 +263,21 @@ impl Replay {
     /// # Errors
     /// As [`Replay::start_env`]; [`ReplayError::Engine`] when a step is refused (the episode
     /// ended early); [`ReplayError::Diverged`] at the first frame that differs.
-    pub fn simulate(&self, mut visit: impl FnMut(&Env, usize)) -> Result<Env, ReplayError> {
-        let mut env = self.start_env()?;
+    pub fn simulate(&self, visit: impl FnMut(&Env, usize)) -> Result<Env, ReplayError> {
+        self.simulate_with(None, visit)
+    }
+
+    /// [`Replay::simulate`] with `hooks` running the scenario's scripts (see
+    /// [`Replay::start_env_with`]).
+    ///
+    /// # Errors
+    /// As [`Replay::simulate`].
+    pub fn simulate_with(
+        &self,
+        hooks: Option<Box<dyn Hooks>>,
+        mut visit: impl FnMut(&Env, usize),
+    ) -> Result<Env, ReplayError> {
+        let mut env = self.start_env_with(hooks)?;
         let mut frame = Frame::default();
         for k in 0..self.frames.len() {
             if k > 0 {
@@ -245,12 +302,21 @@ impl Replay {
     /// [`ReplayError::Inconsistent`] for an empty or out-of-range span; the errors of
     /// [`Replay::simulate`] while reaching `first`.
     pub fn clip(&self, first: usize, last: usize) -> Result<Replay, ReplayError> {
+        self.clip_with(None, first, last)
+    }
+
+    /// [`Replay::clip`] with `hooks` running the scenario's scripts (see
+    /// [`Replay::start_env_with`]).
+    ///
+    /// # Errors
+    /// As [`Replay::clip`].
+    pub fn clip_with(&self, hooks: Option<Box<dyn Hooks>>, first: usize, last: usize) -> Result<Replay, ReplayError> {
         if first > last || last > self.steps() {
             return Err(ReplayError::Inconsistent {
                 reason: format!("frames {first}..={last} are not inside 0..={}", self.steps()),
             });
         }
-        let mut env = self.start_env()?;
+        let mut env = self.start_env_with(hooks)?;
         for k in 0..first {
             env.step(self.step_actions(k))?;
         }
@@ -269,6 +335,12 @@ impl Replay {
             actions: self.actions[first * self.controllers..last * self.controllers].to_vec(),
             controllers: self.controllers,
             frames: self.frames[first..=last].to_vec(),
+            scripts: self.scripts.clone(),
+            values: self
+                .values
+                .iter()
+                .map(|v| StepValues { name: v.name.clone(), values: v.values[first..last].to_vec() })
+                .collect(),
         })
     }
 
@@ -301,6 +373,19 @@ impl Replay {
         }
         if self.roster.len() > 2 * touchline_engine::MAX_PLAYERS_PER_TEAM {
             return bad(format!("{} players", self.roster.len()));
+        }
+        for (i, v) in self.values.iter().enumerate() {
+            if v.values.len() != self.steps() {
+                return bad(format!(
+                    "the values {:?} hold {} numbers for {} steps",
+                    v.name,
+                    v.values.len(),
+                    self.steps()
+                ));
+            }
+            if self.values[..i].iter().any(|w| w.name == v.name) {
+                return bad(format!("two series of values are named {:?}", v.name));
+            }
         }
         for (k, f) in self.frames.iter().enumerate() {
             if f.players.len() != self.roster.len() {

@@ -10,6 +10,7 @@ use touchline_render::{RenderOptions, Renderer, Scene};
 use crate::convert::raw_to_dict;
 use crate::core::{EnvArgs, EnvCore, ObsOut};
 use crate::errors::{engine_error, guard};
+use crate::recording::Recording;
 
 /// What `Env.step` returns: (observation, rewards, terminated, truncated, info).
 type StepResult<'py> = (Bound<'py, PyAny>, Bound<'py, PyArray1<f32>>, bool, bool, Bound<'py, PyDict>);
@@ -25,6 +26,10 @@ pub(crate) struct PyEnv {
     renderer: Option<Renderer>,
     /// With `watch=True`: the watched source (its messages for `watch_messages`).
     watch: Option<std::sync::Arc<crate::watch::Watch>>,
+    /// The scenario's compiled scripts (their text goes into replays).
+    scripts: touchline_dsl::script::Scripts,
+    /// While recording is on (`start_recording`): the episode's replay so far.
+    recording: Option<Recording>,
 }
 
 /// What an `Env` was made with (see [`PyEnv::__getnewargs_ex__`]).
@@ -137,6 +142,7 @@ impl PyEnv {
                 watch,
             )?;
             let core = EnvCore::new(&args, seed).map_err(engine_error)?;
+            let scripts = args.scripts.clone();
             let watch = args.watch;
             let init = InitArgs {
                 scenario: scenario.to_owned(),
@@ -150,7 +156,7 @@ impl PyEnv {
                 channel_dimensions,
                 watch: watch.is_some(),
             };
-            Ok(PyEnv { core, init, watch, actions: Vec::new(), renderer: None })
+            Ok(PyEnv { core, init, watch, actions: Vec::new(), renderer: None, scripts, recording: None })
         })
     }
 
@@ -212,6 +218,9 @@ impl PyEnv {
     fn reset<'py>(&mut self, py: Python<'py>, seed: Option<u64>) -> PyResult<Bound<'py, PyAny>> {
         guard(|| {
             self.core.reset(seed).map_err(engine_error)?;
+            if let Some(r) = &mut self.recording {
+                r.restart(&self.core.env);
+            }
             self.observation(py, true)
         })
     }
@@ -221,6 +230,9 @@ impl PyEnv {
             let mut buf = std::mem::take(&mut self.actions);
             let read = read_actions(actions, self.core.env.num_controllers(), &mut buf);
             let outcome = read.and_then(|()| self.core.step(&buf).map_err(engine_error));
+            if let (Ok(_), Some(r)) = (&outcome, &mut self.recording) {
+                r.record(&self.core.env, &buf).map_err(engine_error)?;
+            }
             self.actions = buf;
             let outcome = outcome?;
             let obs = self.observation(py, false)?;
@@ -245,7 +257,108 @@ impl PyEnv {
 
     /// Restores a state from `get_state` of an env built with the same arguments.
     fn set_state(&mut self, state: &[u8]) -> PyResult<()> {
-        guard(|| self.core.restore_bytes(state).map_err(engine_error))
+        guard(|| {
+            self.core.restore_bytes(state).map_err(engine_error)?;
+            if let Some(r) = &mut self.recording {
+                r.restart(&self.core.env);
+            }
+            Ok(())
+        })
+    }
+
+    /// Starts recording the episode from the current state (from its start right after a reset;
+    /// mid-episode from a snapshot of the state). Recording goes on, restarting at every reset,
+    /// until `stop_recording`.
+    fn start_recording(&mut self) -> PyResult<()> {
+        guard(|| {
+            // With watch=True, the scripts of the newest good build (the ones the next reset
+            // takes up).
+            let scripts = match &self.watch {
+                Some(w) => w.watched.current().scripts.clone(),
+                None => self.scripts.clone(),
+            };
+            self.recording = Some(Recording::start(&self.core.env, scripts));
+            Ok(())
+        })
+    }
+
+    /// Stops recording and drops what was recorded.
+    fn stop_recording(&mut self) {
+        self.recording = None;
+    }
+
+    /// Whether recording is on.
+    #[getter]
+    fn recording(&self) -> bool {
+        self.recording.is_some()
+    }
+
+    /// Steps recorded in the current episode (0 when recording is off).
+    #[getter]
+    fn recorded_steps(&self) -> usize {
+        self.recording.as_ref().map_or(0, Recording::steps)
+    }
+
+    /// Attaches named numbers to the next step (the one the next `step` call plays).
+    fn record_values(&mut self, values: std::collections::HashMap<String, f64>) -> PyResult<()> {
+        guard(|| {
+            let Some(r) = &mut self.recording else {
+                return Err(pyo3::exceptions::PyRuntimeError::new_err(
+                    "recording is off: call start_recording() first (or wrap the env in touchline.RecordReplay)",
+                ));
+            };
+            let mut names: Vec<&String> = values.keys().collect();
+            names.sort();
+            for name in names {
+                if name.is_empty() || name.len() > 64 {
+                    return Err(PyValueError::new_err(format!(
+                        "value names must be 1 to 64 characters long, got {name:?}"
+                    )));
+                }
+                r.value(name, values[name] as f32);
+            }
+            Ok(())
+        })
+    }
+
+    /// Writes the episode recorded so far to `path` as a `.tlreplay` file (whole or not at all).
+    fn save_replay(&self, path: std::path::PathBuf) -> PyResult<()> {
+        guard(|| {
+            let Some(r) = &self.recording else {
+                return Err(pyo3::exceptions::PyRuntimeError::new_err(
+                    "recording is off: call start_recording() before playing the episode \
+                     (or wrap the env in touchline.RecordReplay)",
+                ));
+            };
+            r.save(&path).map_err(|e| {
+                pyo3::exceptions::PyOSError::new_err(format!("cannot write the replay {}: {e}", path.display()))
+            })
+        })
+    }
+
+    /// Writes frames `first..=last` of the episode recorded so far (frame 0 is the recording's
+    /// start, frame k the state after its k-th step) as a replay starting at `first`.
+    fn save_replay_clip(&self, path: std::path::PathBuf, first: usize, last: usize) -> PyResult<()> {
+        guard(|| {
+            let Some(r) = &self.recording else {
+                return Err(pyo3::exceptions::PyRuntimeError::new_err(
+                    "recording is off: call start_recording() before playing the episode",
+                ));
+            };
+            r.save_clip(&path, first, last).map_err(|e| match e {
+                crate::recording::ClipError::Replay(e) => {
+                    PyValueError::new_err(format!("cannot cut frames {first}..={last}: {e}"))
+                }
+                crate::recording::ClipError::Write(e) => {
+                    pyo3::exceptions::PyOSError::new_err(format!("cannot write the replay {}: {e}", path.display()))
+                }
+            })
+        })
+    }
+
+    /// A 32-bit hash of the exact match state (the one replays store after every step).
+    fn state_hash(&self) -> u32 {
+        touchline_render::replay::state_hash(self.core.env.game())
     }
 
     /// Pickling (protocol 2 and up): the constructor's arguments ...

@@ -21,6 +21,13 @@ pyo3::create_exception!(
     "A scenario could not be loaded; the message is the rendered diagnostic."
 );
 
+pyo3::create_exception!(
+    _touchline,
+    ReplayError,
+    TouchlineError,
+    "A replay file that cannot be read (damaged, another format version) or that does not re-simulate."
+);
+
 /// A scenario that failed to load: `ScenarioError` with the plain rendered diagnostic as its
 /// message and the stable code (`tl::E001`, …) as its `code` attribute.
 pub(crate) fn scenario_error(py: Python<'_>, err: &LoadError) -> PyErr {

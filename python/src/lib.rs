@@ -7,6 +7,8 @@ mod convert;
 mod core;
 mod env;
 mod errors;
+mod recording;
+mod replay;
 mod vector;
 mod watch;
 mod worker;
@@ -34,9 +36,11 @@ fn _touchline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("TouchlineError", py.get_type::<errors::TouchlineError>())?;
     m.add("ScenarioError", py.get_type::<errors::ScenarioError>())?;
+    m.add("ReplayError", py.get_type::<errors::ReplayError>())?;
     m.add_function(wrap_pyfunction!(scenario_names, m)?)?;
     m.add_function(wrap_pyfunction!(scenario_json, m)?)?;
     m.add_class::<env::PyEnv>()?;
     m.add_class::<vector::PyVectorEnv>()?;
+    m.add_class::<replay::PyReplay>()?;
     Ok(())
 }

@@ -3,13 +3,24 @@
 Checked against the built module by `python -m mypy.stubtest touchline._touchline`.
 """
 
+import os
 from typing import Any, final
 
 import numpy as np
 import numpy.typing as npt
 from typing_extensions import Self
 
-__all__ = ["Env", "ScenarioError", "TouchlineError", "VectorEnv", "__version__", "scenario_json", "scenario_names"]
+__all__ = [
+    "Env",
+    "Replay",
+    "ReplayError",
+    "ScenarioError",
+    "TouchlineError",
+    "VectorEnv",
+    "__version__",
+    "scenario_json",
+    "scenario_names",
+]
 
 __version__: str
 
@@ -20,6 +31,9 @@ class ScenarioError(TouchlineError):
     """A scenario could not be loaded; the message is the rendered diagnostic."""
 
     code: str
+
+class ReplayError(TouchlineError):
+    """A replay file that cannot be read (damaged, another format version) or that does not re-simulate."""
 
 def scenario_names() -> list[str]:
     """Names of the stdlib scenarios, sorted."""
@@ -138,6 +152,98 @@ class Env:
         ...
     def __getstate__(self) -> bytes: ...
     def __setstate__(self, state: bytes) -> None: ...
+    def start_recording(self) -> None:
+        """Starts recording the episode at the current state (from its start right after a reset,
+        mid-episode from a snapshot); recording restarts at every reset until `stop_recording`."""
+    def stop_recording(self) -> None:
+        """Stops recording and drops what was recorded."""
+    @property
+    def recording(self) -> bool:
+        """Whether recording is on."""
+    @property
+    def recorded_steps(self) -> int:
+        """Steps recorded in the current episode (0 when recording is off)."""
+    def record_values(self, values: dict[str, float]) -> None:
+        """Attaches named numbers to the next step played.
+
+        Raises:
+            RuntimeError: recording is off.
+            ValueError: a name that is empty or longer than 64 characters.
+        """
+    def save_replay(self, path: str) -> None:
+        """Writes the episode recorded so far as a `.tlreplay` file, whole or not at all.
+
+        Raises:
+            RuntimeError: recording is off.
+            OSError: the file cannot be written.
+        """
+    def save_replay_clip(self, path: str, first: int, last: int) -> None:
+        """Writes frames `first..=last` of the episode recorded so far (frame 0 the recording's
+        start) as a replay starting at `first`, whole or not at all.
+
+        Raises:
+            RuntimeError: recording is off.
+            ValueError: a span outside the frames recorded.
+            OSError: the file cannot be written.
+        """
+    def state_hash(self) -> int:
+        """A 32-bit hash of the exact match state (the one replays store after every step)."""
+
+@final
+class Replay:
+    """A `.tlreplay` file read by the Rust reader: header, checksum and consistency checked.
+
+    Raises (constructor):
+        OSError: the file cannot be read.
+        ReplayError: not a replay, truncated, corrupted, another format version, inconsistent.
+    """
+
+    def __new__(cls, path: str | os.PathLike[str]) -> Self: ...
+    @property
+    def scenario_name(self) -> str:
+        """The scenario's name."""
+    @property
+    def steps(self) -> int:
+        """Steps recorded."""
+    @property
+    def controllers(self) -> int:
+        """Actions per step (controlled players)."""
+    @property
+    def first_step(self) -> int:
+        """Steps the episode had played before the recording started."""
+    @property
+    def script_paths(self) -> list[str]:
+        """Paths (as the scenario names them) of the scripts the replay carries."""
+    @property
+    def frame_hashes(self) -> list[int]:
+        """The state hash stored with each frame: `steps + 1` of them, frame 0 the start."""
+    @property
+    def scores(self) -> list[list[int]]:
+        """Score `[left, right]` of each frame."""
+    @property
+    def actions(self) -> list[list[str]]:
+        """GRF names of each step's actions, one list of `controllers` names per step."""
+    @property
+    def values(self) -> dict[str, npt.NDArray[np.float32]]:
+        """The recorder's per-step values: name -> float32 (steps,), NaN where none was given."""
+    def write_video(
+        self, path: str | os.PathLike[str], *, width: int = 640, height: int = 360, every: int = 1, fps: int = 10
+    ) -> int:
+        """Draws the replay (its stored frames) into `path`: `NAME.gif`, `NAME.mp4` (needs
+        `ffmpeg` on the PATH) or a folder of PNG frames; `every`th step, `fps` frames per second.
+        Returns the number of frames written.
+
+        Raises:
+            OSError: a bad size, rate or extension, a file that cannot be written, no ffmpeg for MP4.
+        """
+    def simulate(self) -> list[int]:
+        """Re-simulates the episode (scripts compiled from the text the replay carries) and
+        returns the state hash of every frame.
+
+        Raises:
+            ReplayError: a frame differs from the stored one (another engine version).
+            ScenarioError: the carried scripts do not compile.
+        """
 
 @final
 class VectorEnv:

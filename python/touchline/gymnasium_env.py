@@ -10,6 +10,7 @@ import numpy as np
 from gymnasium import spaces
 
 from . import _arguments
+from .recording import ReplayRecording
 from ._touchline import Env as _CoreEnv
 
 
@@ -30,7 +31,7 @@ def reset_info(core: _CoreEnv) -> dict[str, Any]:
     return info
 
 
-class FootballEnv(gymnasium.Env[np.ndarray, Any]):
+class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
     """A football match against touchline's built-in AI, with Google Research Football's conventions.
 
     ## Description

@@ -10,10 +10,11 @@ from gymnasium import spaces
 from pettingzoo import ParallelEnv  # type: ignore[import-untyped]
 
 from . import _arguments
+from .recording import ReplayRecording
 from .gymnasium_env import reset_info
 
 
-class FootballParallelEnv(ParallelEnv[str, np.ndarray, int]):  # type: ignore[misc]
+class FootballParallelEnv(ReplayRecording, ParallelEnv[str, np.ndarray, int]):  # type: ignore[misc]
     """Several controlled players, on one team or both (self-play), each an agent.
 
     Agents are named `left_0 … left_{L-1}` then `right_0 … right_{R-1}`. Every agent observes the

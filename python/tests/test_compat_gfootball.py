@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 import touchline
@@ -143,9 +145,9 @@ def test_other_config_options() -> None:
         ({"env_name": ""}, "env_name"),
         ({"representation": "smm"}, "Unsupported representation: smm"),
         ({"rewards": "checkpoints"}, "scoring"),
-        ({"write_video": True}, "video"),
-        ({"write_goal_dumps": True}, "dumps"),
-        ({"write_full_episode_dumps": True}, "dumps"),
+        ({"write_goal_dumps": True}, "logdir is empty"),
+        ({"write_full_episode_dumps": True}, "logdir is empty"),
+        ({"write_full_episode_dumps": True, "logdir": "/tmp", "dump_frequency": -1}, "dump_frequency"),
         ({"extra_players": ["bot:right_players=1"]}, "extra_players"),
         ({"representation": "raw", "stacked": True}, "stacked"),
     ],
@@ -170,3 +172,55 @@ def test_step_after_done() -> None:
         _, _, done, _ = env.step(env.action_space.sample())
     with pytest.raises(RuntimeError):
         env.step(0)
+
+
+def test_full_episode_and_goal_dumps_are_replays_with_videos(tmp_path: Path) -> None:
+    """GRF's dumps as touchline replays (issue 19): every second episode (dump_frequency=2) is
+    written whole and round its goal, with a GIF beside each; each replay re-simulates."""
+    env = create_environment(
+        env_name="academy_empty_goal_close",
+        representation="simple115v2",
+        write_full_episode_dumps=True,
+        write_goal_dumps=True,
+        write_video=True,
+        dump_frequency=2,
+        logdir=str(tmp_path / "dumps"),
+        other_config_options={"game_engine_random_seed": 3},
+    )
+    written: list[list[dict]] = []
+    for _ in range(3):
+        env.reset()
+        done = False
+        dumps: list[dict] = []
+        steps = 0
+        while not done:
+            # Run right and shoot: the empty goal is scored in about 30 steps.
+            _, _, done, info = env.step(12 if steps > 25 else 5)
+            steps += 1
+            dumps += info.get("dumps", [])
+        written.append(dumps)
+    assert written[1] == []
+    for episode in (0, 2):
+        names = sorted(d["name"] for d in written[episode])
+        assert names == ["episode_done", "score"], written[episode]
+        for d in written[episode]:
+            replay = touchline.Replay(d["replay"])
+            assert replay.simulate() == replay.frame_hashes
+            assert Path(d["video"]).read_bytes()[:6] == b"GIF89a"
+        full = next(d for d in written[episode] if d["name"] == "episode_done")
+        goal = next(d for d in written[episode] if d["name"] == "score")
+        whole, clip = touchline.Replay(full["replay"]), touchline.Replay(goal["replay"])
+        # The episode ends on the goal, so the clip holds the (< 100) steps before it.
+        assert clip.frame_hashes == whole.frame_hashes[-len(clip.frame_hashes) :]
+        assert whole.scores[-1] == [1, 0]
+    assert len(list((tmp_path / "dumps").glob("*.tlreplay"))) == 4
+
+
+def test_write_video_without_dumps_writes_nothing(tmp_path: Path) -> None:
+    env = create_environment(
+        env_name="academy_empty_goal_close", write_video=True, logdir=str(tmp_path)
+    )
+    env.reset()
+    _, _, _, info = env.step(0)
+    assert "dumps" not in info
+    assert list(tmp_path.iterdir()) == []

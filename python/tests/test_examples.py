@@ -11,7 +11,7 @@ import pytest
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 #: Modules whose docstring shows runnable code.
-MODULES = ["touchline", "touchline.vector", "touchline.compat.gfootball"]
+MODULES = ["touchline", "touchline.vector", "touchline.compat.gfootball", "touchline.record_replay"]
 BLOCK = re.compile(r"^```python\n(.*?)^```", re.MULTILINE | re.DOTALL)
 
 
@@ -35,7 +35,8 @@ def test_readme_example(code: str, tmp_path, monkeypatch) -> None:
 
 
 @pytest.mark.parametrize("module", MODULES)
-def test_docstring_examples(module: str) -> None:
+def test_docstring_examples(module: str, tmp_path, monkeypatch) -> None:
+    monkeypatch.chdir(tmp_path)
     doc = inspect.cleandoc(importlib.import_module(module).__doc__ or "")
     found = blocks(doc)
     assert found, f"{module}'s docstring has no example"

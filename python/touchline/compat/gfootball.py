@@ -17,9 +17,12 @@ dicts. The reward is a float for one player and a float32 array (M,) for several
 accepted and changes nothing, since touchline draws on demand without a display), and
 `env.render(mode="rgb_array")` returns a 1280 × 720 RGB frame (GRF returns BGR there).
 
-Not available yet (a `ValueError` says so when asked for): GRF's dumps and videos
-(`write_goal_dumps`, `write_full_episode_dumps`, `write_video`; use `touchline run --record`),
-`extra_players` and `action_set="full"`. GRF's `control_all_players`
+GRF's dumps and videos (`write_full_episode_dumps`, `write_goal_dumps`, `write_video`,
+`dump_frequency`, `logdir`) are written as touchline replays (`.tlreplay`, with `.gif` videos
+beside them): see `touchline.compat.dumps`. As in GRF, `info["dumps"]` lists the dumps a step
+finished.
+
+Not available yet (a `ValueError` says so when asked for): `extra_players` and `action_set="full"`. GRF's `control_all_players`
 reduction (`MultiAgentToSingleAgent`) is not applied: in such a scenario the env returns every
 controllable player.
 """
@@ -33,6 +36,7 @@ from gymnasium import spaces
 
 from .. import _arguments
 from .._touchline import Env as _CoreEnv
+from .dumps import DumpWriter
 
 __all__ = ["FootballEnv", "create_environment"]
 
@@ -44,13 +48,14 @@ _COSMETIC_OPTIONS = frozenset(
         "real_time",
         "render_resolution_x",
         "render_resolution_y",
-        "tracesdir",
         "video_format",
         "video_quality_level",
     }
 )
-#: `other_config_options` keys honoured as flags that must stay off (dumps and video).
-_OFF_OPTIONS = frozenset({"dump_full_episodes", "dump_scores", "write_video", "render"})
+#: `other_config_options` keys honoured as flags that must stay off.
+_OFF_OPTIONS = frozenset({"render"})
+#: `other_config_options` keys of the dumps (GRF's Config names), overriding the arguments.
+_DUMP_OPTIONS = frozenset({"dump_full_episodes", "dump_scores", "write_video", "tracesdir"})
 #: GRF's seed when the user gives none is random per episode; these keys set it.
 _SEED_OPTION = "game_engine_random_seed"
 
@@ -68,8 +73,9 @@ class FootballEnv:
     reward_range = (-float("inf"), float("inf"))
     spec = None
 
-    def __init__(self, core: _CoreEnv, representation: str) -> None:
+    def __init__(self, core: _CoreEnv, representation: str, dumps: DumpWriter | None = None) -> None:
         self._core = core
+        self._dumps = dumps
         self._representation = representation
         self._count: int = core.num_controllers
         self._single = self._count == 1 and representation != "raw"
@@ -107,6 +113,8 @@ class FootballEnv:
             self._next_seed = None
         else:
             observation = self._core.reset()
+        if self._dumps is not None:
+            self._dumps.reset()
         return self._shape(observation)
 
     def step(self, action: Any) -> tuple[Any, Any, bool, dict[str, Any]]:
@@ -114,14 +122,23 @@ class FootballEnv:
 
         Accepts an integer (one player) or a list/array of M integers, left players first.
 
+        With dumps on, `info["dumps"]` lists the dumps this step finished, each
+        `{"name": "episode_done" | "score" | "lost_score", "replay": path, "video": path or None}`.
+
         Raises:
             ValueError: a wrong number of actions or an index outside the action set.
             RuntimeError: the episode is done; call `reset()`.
+            OSError: a dump cannot be written.
         """
         _arguments.write_actions(action, self._actions, self._action_count)
         observation, rewards, terminated, truncated, info = self._core.step(self._actions)
         reward: Any = float(rewards[0]) if self._count == 1 else rewards
-        return self._shape(observation), reward, bool(terminated or truncated), info
+        done = bool(terminated or truncated)
+        if self._dumps is not None:
+            dumps = self._dumps.step(info, done)
+            if dumps:
+                info["dumps"] = dumps
+        return self._shape(observation), reward, done, info
 
     def observation(self) -> list[dict[str, Any]]:
         """GRF's `env.unwrapped.observation()`: the raw observation of each controlled player."""
@@ -188,8 +205,16 @@ def create_environment(
         stacked: stack the last 4 observations along the last axis.
         representation: "raw", "extracted" (SMM), "simple115" or "simple115v2".
         rewards: comma-separated; must contain "scoring"; "checkpoints" adds the checkpoint reward.
-        write_goal_dumps, write_full_episode_dumps, render, write_video: must be False for now.
-        dump_frequency, logdir: accepted; they only matter for dumps.
+        write_goal_dumps: write a replay round each goal (the 100 steps before it and 1 after),
+            `score_<time>.tlreplay` for a goal the agent's team scores, `lost_score_<time>` for one
+            it concedes.
+        write_full_episode_dumps: write each episode whole, `episode_done_<time>.tlreplay`.
+        render: must be False (touchline draws on demand, without a display).
+        write_video: with a dump, also write its video, `<dump>.gif` (800 × 450, 10 frames per
+            second, drawn on the CPU; GRF writes `.avi`). Without dumps it writes nothing, as in GRF.
+        dump_frequency: with N > 1, dumps only for every Nth episode (the 0th, Nth, ...); 0 and 1
+            dump every episode.
+        logdir: the folder of the dumps (made if missing); must be set when dumps are on.
         extra_players: must be empty for now (no scripted or checkpoint players).
         number_of_left_players_agent_controls, number_of_right_players_agent_controls: players the
             agent controls on each side.
@@ -209,11 +234,17 @@ def create_environment(
         raise ValueError(f"Unsupported representation: {representation}")
     if stacked and representation == "raw":
         raise ValueError("stacked=True needs an array representation, not 'raw'")
-    if write_goal_dumps or write_full_episode_dumps or write_video:
+    write_full_episode_dumps = bool(options.pop("dump_full_episodes", write_full_episode_dumps))
+    write_goal_dumps = bool(options.pop("dump_scores", write_goal_dumps))
+    write_video = bool(options.pop("write_video", write_video))
+    logdir = str(options.pop("tracesdir", logdir))
+    if (write_goal_dumps or write_full_episode_dumps) and not logdir:
         raise ValueError(
-            "dumps and videos (write_goal_dumps, write_full_episode_dumps, write_video) are not "
-            "available yet in touchline"
+            "dumps are on (write_full_episode_dumps or write_goal_dumps) but logdir is empty: "
+            "pass the folder to write them in, e.g. logdir='/tmp/dumps'"
         )
+    if isinstance(dump_frequency, bool) or not isinstance(dump_frequency, int) or dump_frequency < 0:
+        raise ValueError(f"dump_frequency must be a non-negative integer, got {dump_frequency!r}")
     if extra_players:
         raise ValueError(
             f"extra_players={extra_players!r} is not supported yet: touchline has no scripted or "
@@ -235,7 +266,8 @@ def create_environment(
             raise ValueError(f"other_config_options[{key!r}] is not available yet in touchline")
         raise ValueError(
             f"other_config_options[{key!r}] is not supported; supported keys are 'action_set', "
-            f"'{_SEED_OPTION}', 'level', 'physics_steps_per_frame' (10) and the display settings "
+            f"'{_SEED_OPTION}', 'level', 'physics_steps_per_frame' (10), the dump settings "
+            f"({', '.join(sorted(_DUMP_OPTIONS))}) and the display settings "
             f"({', '.join(sorted(_COSMETIC_OPTIONS))})"
         )
     left, right = _arguments.controls_argument(
@@ -252,4 +284,12 @@ def create_environment(
         stacked=stacked,
         channel_dimensions=channel_dimensions,
     )
-    return FootballEnv(core, representation)
+    dumps = DumpWriter(
+        core,
+        logdir,
+        full_episodes=write_full_episode_dumps,
+        goals=write_goal_dumps,
+        video=write_video,
+        dump_frequency=dump_frequency,
+    )
+    return FootballEnv(core, representation, dumps if dumps.active else None)

@@ -337,3 +337,69 @@ fn delta_decode(frames: &mut [Frame]) {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use touchline_engine::{Action, Env, Scenario};
+
+    use super::*;
+    use crate::replay::{Recorder, StepValues};
+
+    /// Version 1's payload as version 1 wrote it: [`Stored`] without the scripts and values.
+    #[derive(serde::Serialize)]
+    struct StoredV1<'a> {
+        scenario: String,
+        config: &'a touchline_engine::EnvConfig,
+        start: &'a super::super::Start,
+        first_step: u32,
+        roster: &'a [super::super::RosterEntry],
+        actions: &'a [touchline_engine::Action],
+        controllers: usize,
+        frames: DeltaFrames<'a>,
+    }
+
+    fn recorded() -> Replay {
+        let path = format!("{}/../stdlib-scenarios/academy_empty_goal_close.json", env!("CARGO_MANIFEST_DIR"));
+        let scenario: Scenario = serde_json::from_str(&std::fs::read_to_string(path).expect("scenario")).expect("json");
+        let mut env = Env::new(scenario, 1).expect("env");
+        let mut recorder = Recorder::start(&env);
+        for _ in 0..12 {
+            recorder.value("value", 0.5);
+            env.step(&[Action::Right]).expect("step");
+            recorder.record(&env, &[Action::Right]);
+        }
+        recorder.finish()
+    }
+
+    #[test]
+    fn version_1_files_are_still_read() {
+        let replay = recorded();
+        let stored = StoredV1 {
+            scenario: serde_json::to_string(&replay.scenario).expect("json"),
+            config: &replay.config,
+            start: &replay.start,
+            first_step: replay.first_step,
+            roster: &replay.roster,
+            actions: &replay.actions,
+            controllers: replay.controllers,
+            frames: DeltaFrames(&replay.frames),
+        };
+        let raw = postcard::to_allocvec(&stored).expect("postcard");
+        let mut z = ZlibEncoder::new(Vec::new(), Compression::fast());
+        z.write_all(&raw).expect("compress");
+        let payload = z.finish().expect("compress");
+        let mut bytes = MAGIC.to_vec();
+        bytes.extend_from_slice(&1u16.to_le_bytes());
+        bytes.extend_from_slice(&(payload.len() as u64).to_le_bytes());
+        bytes.extend_from_slice(&fnv(&payload).to_le_bytes());
+        bytes.extend_from_slice(&payload);
+        let back = Replay::from_bytes(&bytes).expect("a version 1 file reads");
+        assert_eq!(back.frames, replay.frames);
+        assert_eq!(back.actions, replay.actions);
+        assert!(back.scripts.is_empty() && back.values.is_empty());
+        back.simulate(|_, _| {}).expect("it re-simulates");
+        // The version written now keeps the values.
+        let now = Replay::from_bytes(&replay.to_bytes()).expect("reads");
+        assert_eq!(now.values, vec![StepValues { name: "value".into(), values: vec![0.5; 12] }]);
+    }
+}

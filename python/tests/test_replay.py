@@ -162,3 +162,36 @@ def test_recording_errors_are_clear(tmp_path: Path) -> None:
     with pytest.raises(OSError):
         touchline.Replay(tmp_path / "nothing.tlreplay")
     assert issubclass(touchline.ReplayError, touchline.TouchlineError)
+
+
+def test_episodes_cut_short_are_saved_as_they_stand(tmp_path: Path) -> None:
+    env = touchline.RecordReplay(touchline.make("academy_empty_goal_close"), tmp_path)
+    env.reset(seed=0)
+    for _ in range(3):
+        env.step(5)
+    env.reset(seed=1)
+    for _ in range(2):
+        env.step(5)
+    env.close()
+    assert touchline.Replay(tmp_path / "episode-0.tlreplay").steps == 3
+    assert touchline.Replay(tmp_path / "episode-1.tlreplay").steps == 2
+
+
+def test_replays_draw_into_gif_and_png_frames(tmp_path: Path) -> None:
+    env = touchline.make("academy_empty_goal_close")
+    env.reset(seed=0)
+    env.start_recording()
+    for _ in range(6):
+        env.step(5)
+    env.save_replay(tmp_path / "ep.tlreplay")
+    replay = touchline.Replay(tmp_path / "ep.tlreplay")
+    assert replay.write_video(tmp_path / "ep.gif", width=64, height=36) == 7
+    assert (tmp_path / "ep.gif").read_bytes()[:6] == b"GIF89a"
+    assert replay.write_video(tmp_path / "frames", width=32, height=18, every=3) == 3
+    assert sorted(p.name for p in (tmp_path / "frames").iterdir()) == [
+        "frame_00000.png", "frame_00001.png", "frame_00002.png"
+    ]
+    with pytest.raises(ValueError, match="16 to 8192"):
+        replay.write_video(tmp_path / "x.gif", width=8)
+    with pytest.raises(OSError, match="unknown video type"):
+        replay.write_video(tmp_path / "x.avi")

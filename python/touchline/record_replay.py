@@ -96,7 +96,8 @@ class RecordReplay(gymnasium.Wrapper[Any, Any, Any, Any]):
         name_prefix: the files' name before `-{episode}`.
 
     At the end of a recorded episode the file is written and `info["replay_path"]` names it
-    (in every agent's info for PettingZoo). `close()` saves an episode cut short.
+    (in every agent's info for PettingZoo). An episode cut short by `reset()` or `close()` is
+    saved as it stands (if it has steps).
     `record_values` attaches numbers (a value estimate, action probabilities) to the next step.
 
     Raises:

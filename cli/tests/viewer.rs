@@ -239,6 +239,7 @@ fn viewer_shows_each_steps_actions_rewards_and_recorded_values() {
     assert_eq!(text_of(&dom, "step-reward-1"), format!("{:.3}", rewards[4][1]));
     assert_eq!(text_of(&dom, "value-value"), "0.500");
     assert_eq!(text_of(&dom, "value-p_shot"), "0.750");
+    assert!(dom.contains("class=\"bar\" style=\"width: 75px;\""), "a probability gets a bar: {dom}");
     let dom = headless(&browser, &dir.join("profile"), &["--dump-dom"], &url.replace("frame=5", "frame=3"));
     assert_eq!(text_of(&dom, "value-p_shot"), "\u{2014}", "no value given at that step");
     assert!(!dom.contains("id=\"zoom-control\" hidden"), "a drill offers the zoom");

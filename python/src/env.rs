@@ -170,6 +170,12 @@ impl PyEnv {
         self.core.env.action_set().len()
     }
 
+    /// GRF names of the action set's actions, in index order.
+    #[getter]
+    fn action_names(&self) -> Vec<&'static str> {
+        self.core.env.action_set().actions().iter().map(|a| a.name()).collect()
+    }
+
     #[getter]
     fn observation_shape<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         PyTuple::new(py, self.core.observation_shape())
@@ -299,23 +305,21 @@ impl PyEnv {
         self.recording.as_ref().map_or(0, Recording::steps)
     }
 
-    /// Attaches named numbers to the next step (the one the next `step` call plays).
-    fn record_values(&mut self, values: std::collections::HashMap<String, f64>) -> PyResult<()> {
+    /// Attaches named numbers to the next step (the one the next `step` call plays), in order.
+    fn record_values(&mut self, values: Vec<(String, f64)>) -> PyResult<()> {
         guard(|| {
             let Some(r) = &mut self.recording else {
                 return Err(pyo3::exceptions::PyRuntimeError::new_err(
                     "recording is off: call start_recording() first (or wrap the env in touchline.RecordReplay)",
                 ));
             };
-            let mut names: Vec<&String> = values.keys().collect();
-            names.sort();
-            for name in names {
-                if name.is_empty() || name.len() > 64 {
-                    return Err(PyValueError::new_err(format!(
-                        "value names must be 1 to 64 characters long, got {name:?}"
-                    )));
-                }
-                r.value(name, values[name] as f32);
+            if let Some((name, _)) = values.iter().find(|(name, _)| name.is_empty() || name.len() > 64) {
+                return Err(PyValueError::new_err(format!(
+                    "value names must be 1 to 64 characters long, got {name:?}"
+                )));
+            }
+            for (name, value) in &values {
+                r.value(name, *value as f32);
             }
             Ok(())
         })

@@ -1,10 +1,9 @@
 //! `touchline._touchline.Replay`: a `.tlreplay` file read by the Rust reader, for checking and
 //! analysing recorded episodes from Python.
 
-use std::collections::HashMap;
-
 use numpy::PyArray1;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 use touchline_dsl::script::{ScriptOptions, Scripts};
 use touchline_render::replay::{Replay, ReplayError as RustReplayError, state_hash};
 use touchline_render::video::{Video, VideoOptions};
@@ -90,11 +89,15 @@ impl PyReplay {
         (0..self.replay.steps()).map(|k| self.replay.step_actions(k).iter().map(|a| a.name()).collect()).collect()
     }
 
-    /// The recorder's per-step values: name -> float32 array of shape (steps,), NaN where none
-    /// was given.
+    /// The recorder's per-step values, in the order they were first given: name -> float32
+    /// array of shape (steps,), NaN where none was given.
     #[getter]
-    fn values<'py>(&self, py: Python<'py>) -> HashMap<String, Bound<'py, PyArray1<f32>>> {
-        self.replay.values.iter().map(|v| (v.name.clone(), PyArray1::from_slice(py, &v.values))).collect()
+    fn values<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for v in &self.replay.values {
+            d.set_item(&v.name, PyArray1::from_slice(py, &v.values))?;
+        }
+        Ok(d)
     }
 
     /// Re-simulates the episode in a fresh env (scripts compiled from the text the replay

@@ -7,6 +7,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import touchline
@@ -70,6 +71,9 @@ def test_sb3_models_record_their_value_estimates(tmp_path: Path) -> None:
     result = duel(load_policy(str(tmp_path / "model.zip")), None, "academy_empty_goal_close", 1,
                   record=tmp_path / "replays")
     replay = touchline.Replay(result.replays[0])
-    assert sorted(replay.values) == ["model.p_action", "model.value"]
-    assert ((replay.values["model.p_action"] > 0) & (replay.values["model.p_action"] <= 1)).all()
+    names = list(replay.values)
+    assert names[0] == "model.value" and len(names) == 20
+    assert names[1] == "model.probs[idle]" and names[19] == "model.probs[release_dribble]"
+    probs = np.stack([replay.values[n] for n in names[1:]])
+    np.testing.assert_allclose(probs.sum(axis=0), 1.0, rtol=1e-5)
     assert replay.simulate() == replay.frame_hashes

@@ -195,3 +195,26 @@ def test_replays_draw_into_gif_and_png_frames(tmp_path: Path) -> None:
         replay.write_video(tmp_path / "x.gif", width=8)
     with pytest.raises(OSError, match="unknown video type"):
         replay.write_video(tmp_path / "x.avi")
+
+
+def test_arrays_of_values_are_stored_per_element_in_order(tmp_path: Path) -> None:
+    env = touchline.make("academy_empty_goal_close")
+    env.reset(seed=0)
+    env.start_recording()
+    probs = np.linspace(0.0, 1.0, 19, dtype=np.float32)
+    env.record_values({"value": 0.25, "probs": probs, "aux": [1.5, -2.0]})
+    env.step(5)
+    env.record_values({"value": 0.5})
+    env.step(5)
+    env.save_replay(tmp_path / "ep.tlreplay")
+    values = touchline.Replay(tmp_path / "ep.tlreplay").values
+    names = list(values)
+    assert names[:3] == ["value", "probs[idle]", "probs[left]"]
+    assert names[19:] == ["probs[release_dribble]", "aux[0]", "aux[1]"]
+    np.testing.assert_array_equal(values["value"], [0.25, 0.5])
+    assert values["probs[release_dribble]"][0] == 1.0 and np.isnan(values["probs[idle]"][1])
+    np.testing.assert_array_equal(values["aux[1]"][:1], [-2.0])
+    with pytest.raises(ValueError, match="1-D sequence"):
+        env.record_values({"grid": np.zeros((2, 2))})
+    with pytest.raises(ValueError, match="infinite"):
+        env.record_values({"probs": [0.5, float("inf")]})

@@ -152,6 +152,9 @@ class Env:
         ...
     def __getstate__(self) -> bytes: ...
     def __setstate__(self, state: bytes) -> None: ...
+    @property
+    def action_names(self) -> list[str]:
+        """GRF names of the action set's actions, in index order ("idle", "left", ...)."""
     def start_recording(self) -> None:
         """Starts recording the episode at the current state (from its start right after a reset,
         mid-episode from a snapshot); recording restarts at every reset until `stop_recording`."""
@@ -163,8 +166,9 @@ class Env:
     @property
     def recorded_steps(self) -> int:
         """Steps recorded in the current episode (0 when recording is off)."""
-    def record_values(self, values: dict[str, float]) -> None:
-        """Attaches named numbers to the next step played.
+    def record_values(self, values: list[tuple[str, float]]) -> None:
+        """Attaches named numbers to the next step played, in order (new names become new series
+        in that order).
 
         Raises:
             RuntimeError: recording is off.

@@ -15,8 +15,8 @@ right in odd ones. Match k uses seed `--seed + k`.
 Printed: each match's score, then from the first policy's side its wins, draws and losses, the mean
 goal difference and the mean points (win 1, draw ½, loss 0), each with its 95 % confidence interval
 (mean ± 1.96 standard errors; `nan` for one match). With `--record DIR` every match is written as
-`DIR/duel-<k>.tlreplay` with, per step, each SB3 policy's value estimate and the probability of the
-action it took, named `<policy>.value` and `<policy>.p_action` (`touchline view DIR` shows them).
+`DIR/duel-<k>.tlreplay` with, per step, each SB3 policy's value estimate and action probabilities,
+named `<policy>.value` and `<policy>.probs[<action>]` (`touchline view DIR` shows them).
 """
 
 from __future__ import annotations
@@ -41,10 +41,11 @@ __all__ = ["DuelResult", "Policy", "duel", "load_policy", "main"]
 @dataclass
 class Policy:
     """A named function from one `simple115v2` observation (float32 (115,)) to an action index and
-    the numbers to record beside it (`{"value": v, "p_action": p}` for SB3 models, `{}` otherwise)."""
+    the numbers to record beside it (`{"value": v, "probs": p}`, p float32 (19,), for SB3 models;
+    `{}` otherwise)."""
 
     name: str
-    act: Callable[[np.ndarray], tuple[int, dict[str, float]]]
+    act: Callable[[np.ndarray], tuple[int, dict[str, Any]]]
 
 
 def load_policy(spec: str, seed: int = 0) -> Policy:
@@ -69,14 +70,14 @@ def load_policy(spec: str, seed: int = 0) -> Policy:
 
     model = PPO.load(str(path), device="cpu")
 
-    def act(observation: np.ndarray) -> tuple[int, dict[str, float]]:
+    def act(observation: np.ndarray) -> tuple[int, dict[str, Any]]:
         tensor, _ = model.policy.obs_to_tensor(observation)
         with torch.no_grad():
             probs = model.policy.get_distribution(tensor).distribution.probs[0].cpu().numpy()
             value = float(model.policy.predict_values(tensor)[0, 0])
         # SB3's deterministic prediction of a discrete action: the most probable one.
         action = int(np.argmax(probs))
-        return action, {"value": value, "p_action": float(probs[action])}
+        return action, {"value": value, "probs": probs}
 
     return Policy(path.stem, act)
 
@@ -135,7 +136,7 @@ class DuelResult:
         )
 
 
-def _values(prefix: str, values: dict[str, float]) -> dict[str, float]:
+def _values(prefix: str, values: dict[str, Any]) -> dict[str, Any]:
     return {f"{prefix}{name}": value for name, value in values.items()}
 
 
@@ -191,7 +192,7 @@ def duel(
             observations, infos = env.reset(seed=seed + k)
             while env.agents:
                 actions = {}
-                shown: dict[str, float] = {}
+                shown: dict[str, Any] = {}
                 for agent, policy in players.items():
                     actions[agent], values = policy.act(observations[agent])
                     shown.update(_values(f"{policy.name}.", values))

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Mapping
-from typing import TYPE_CHECKING
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
 
 if TYPE_CHECKING:
     from ._touchline import Env as _CoreEnv
@@ -45,28 +47,39 @@ class ReplayRecording:
         """Steps recorded in the current episode (0 when recording is off)."""
         return self._core.recorded_steps
 
-    def record_values(self, values: Mapping[str, float]) -> None:
+    def record_values(self, values: Mapping[str, float | Sequence[float] | np.ndarray]) -> None:
         """Attaches named numbers to the next step played (for instance `{"value": v}`, the
-        policy's value estimate of the observation it acts on, or `{"p_shot": p}`): the viewer
-        shows them beside that step. Steps without a value under a name hold NaN.
+        policy's value estimate of the observation it acts on): the viewer shows them beside that
+        step. A 1-D sequence or array is stored as one number per element: named
+        `name[<action>]` when it has one element per action (action probabilities:
+        `{"probs": probs}` gives `probs[idle]`, `probs[left]`, ...), else `name[0]`, `name[1]`, ....
+        Steps without a value under a name hold NaN.
 
         Raises:
             RuntimeError: recording is off.
-            ValueError: a name that is empty or longer than 64 characters, or a value that is not
-                a real number.
+            ValueError: a name that is empty or (expanded) longer than 64 characters, a value that
+                is not a real number or a 1-D sequence of them, or an infinite value.
         """
         checked: dict[str, float] = {}
         for name, value in values.items():
             if not isinstance(name, str):
                 raise ValueError(f"value names must be strings, got {name!r}")
-            try:
-                number = float(value)
-            except (TypeError, ValueError):
-                raise ValueError(f"value {name!r} must be a real number, got {value!r}") from None
-            if math.isinf(number):
-                raise ValueError(f"value {name!r} is infinite")
-            checked[name] = number
-        self._core.record_values(checked)
+            if isinstance(value, (str, bytes)):
+                raise ValueError(f"value {name!r} must be a real number, got {value!r}")
+            if isinstance(value, (Sequence, np.ndarray)):
+                array = np.asarray(value)
+                if array.ndim != 1 or not np.issubdtype(array.dtype, np.number):
+                    raise ValueError(
+                        f"value {name!r} must be a real number or a 1-D sequence of them, "
+                        f"got shape {array.shape} of {array.dtype}"
+                    )
+                actions = self._core.action_names
+                labels = actions if len(array) == len(actions) else [str(i) for i in range(len(array))]
+                for label, element in zip(labels, array):
+                    checked[f"{name}[{label}]"] = _real(f"{name}[{label}]", element)
+            else:
+                checked[name] = _real(name, value)
+        self._core.record_values(list(checked.items()))
 
     def save_replay(self, path: str | os.PathLike[str]) -> None:
         """Writes the episode recorded so far (whole once it has ended) to `path`, a `.tlreplay`
@@ -82,3 +95,14 @@ class ReplayRecording:
         """A 32-bit hash of the exact match state, the one replays store after every step
         (`touchline.Replay.frame_hashes`)."""
         return self._core.state_hash()
+
+
+def _real(name: str, value: Any) -> float:
+    """`value` as a float, or a ValueError naming it."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"value {name!r} must be a real number, got {value!r}") from None
+    if math.isinf(number):
+        raise ValueError(f"value {name!r} is infinite")
+    return number

@@ -156,7 +156,10 @@ pub(crate) enum CliError {
 
     /// A replay file is damaged, from another version, or does not reproduce.
     #[error("cannot use the replay {}", path.display())]
-    #[diagnostic(code(tl::cli::replay), help("replays are written by `touchline run --record DIR`"))]
+    #[diagnostic(
+        code(tl::cli::replay),
+        help("replays are written by `touchline run --record DIR` and by Python's `touchline.RecordReplay`")
+    )]
     Replay {
         /// The file.
         path: std::path::PathBuf,

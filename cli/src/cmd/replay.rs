@@ -16,7 +16,7 @@ use crate::CliError;
 /// Arguments of `touchline replay`.
 #[derive(Debug, Args)]
 pub(crate) struct ReplayArgs {
-    /// A replay file written by `touchline run --record` (`.tlreplay`).
+    /// A replay file (`.tlreplay`) written by `touchline run --record` or by Python (`touchline.RecordReplay`).
     file: PathBuf,
 
     /// Output: `NAME.gif` (animated GIF), `NAME.mp4` (needs `ffmpeg` on the PATH), or a folder

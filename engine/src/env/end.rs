@@ -34,7 +34,11 @@ impl EndTracker {
         self.last_mode = mode;
         let extra = scenario.end_when.iter().any(|c| match c {
             EndCondition::Save => saved,
-            EndCondition::KeeperHoldsBall => game.in_hands && game.owner.is_some(),
+            // `in_hands` is only cleared when someone next takes the ball: a keeper about to take
+            // a set piece is not holding it.
+            EndCondition::KeeperHoldsBall => {
+                game.in_hands && game.taker.is_none() && game.owner.is_some_and(|g| game.players[g].is_keeper())
+            }
             EndCondition::RestartTaken => taken,
             EndCondition::Steps(n) => steps >= *n,
             EndCondition::BallIn(region) => region.contains(ball[0], ball[1]),

@@ -189,3 +189,13 @@ fn a_child_keeps_its_parents_start() {
     assert_eq!(env.game().mode(), GameMode::Corner);
     assert_eq!(env.game().owner(), Some((Side::Left, 1)));
 }
+
+/// `facing` reads a direction through a param, as every other value does.
+#[test]
+fn facing_takes_a_param() {
+    let source = "scenario s {\n  extends academy\n  param look = (0, 1)\n  team left { GK at (-1, 0) CF at (0.5, 0) facing look }\n  team right { GK at (-1, 0) }\n}\n";
+    let s = compile(source, "s.tl").unwrap_or_else(|d| panic!("{}", d.render_plain())).scenario;
+    assert_eq!(s.left_team[1].facing, Some(Facing::Direction([0.0, 1.0])));
+    let env = Env::new(s, 0).unwrap();
+    assert_eq!(env.game().team(Side::Left)[1].facing, glam::Vec2::Y);
+}

@@ -181,13 +181,20 @@ fn side_word(side: Side) -> &'static str {
 }
 
 /// The value of a `facing` flag: `ball`, `goal` or a direction `(dx, dy)` in the player's team
-/// frame (plain numbers, not both zero).
+/// frame (plain numbers, not both zero), written out or through a param.
 pub(crate) fn facing(e: &Expr, r: &mut Reader<'_>) -> Option<Facing> {
     const HELP: &str = "write `facing ball`, `facing goal` (the goal he attacks) or `facing (dx, dy)`, a direction in \
                         his team's frame: `(1, 0)` towards the goal he attacks";
     match &e.kind {
-        ExprKind::Path { head, field: None } if head.value == "ball" => Some(Facing::Ball),
-        ExprKind::Path { head, field: None } if head.value == "goal" => Some(Facing::Goal),
+        ExprKind::Path { head, field: None } if head.value == "ball" => return Some(Facing::Ball),
+        ExprKind::Path { head, field: None } if head.value == "goal" => return Some(Facing::Goal),
+        _ => {}
+    }
+    // `param look = (0, 1)` … `facing look`.
+    if let Some(result) = r.through_param(e, |r, v| facing(v, r)) {
+        return result;
+    }
+    match &e.kind {
         ExprKind::Tuple(args) if args.len() == 2 && args.iter().all(|a| a.name.is_none()) => {
             let dx = r.plain_number(&args[0].value, "a direction's dx")?;
             let dy = r.plain_number(&args[1].value, "a direction's dy")?;

@@ -191,6 +191,7 @@ fixtures! {
     facing_nowhere
     ball_replaced_by_restart
     end_only_save
+    restart_off_the_pitch
     relative_to_the_ball
     relative_unknown_player
     param_on_both_axes

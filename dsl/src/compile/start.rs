@@ -5,7 +5,7 @@ use touchline_engine::geometry::coords::world_to_obs;
 use touchline_engine::scenario::{Facing, StartRestart};
 use touchline_engine::{GameMode, Scenario, Side};
 
-use super::value::{Frame, Reader, suggest_help};
+use super::value::{Frame, Reader, short, suggest_help};
 use crate::diagnostic::{Code, Diagnostic};
 use crate::suggest;
 use crate::syntax::{self, Expr, ExprKind, Span};
@@ -128,6 +128,16 @@ pub(crate) fn start_with(w: &syntax::StartWith, span: Span, s: &mut Scenario, r:
         }
         (true, Some(e)) => {
             let Some([x, y]) = r.fixed_point(e, Frame::Ball) else { return };
+            if !(x.abs() <= 1.0 && y.abs() <= 0.42) {
+                r.error_help(
+                    Code::OutOfRange,
+                    format!("a {} is taken on the pitch, not at ({}, {})", name.replace('_', " "), short(x), short(y)),
+                    e.span,
+                    "off the pitch",
+                    "give a point inside the lines: x in [-1, 1], y in [-0.42, 0.42] (global frame, as `ball at`)",
+                );
+                return;
+            }
             if mode == GameMode::ThrowIn && y == 0.0 {
                 r.error_help(
                     Code::RestartShape,

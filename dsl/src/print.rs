@@ -413,6 +413,7 @@ fn event_atom(a: &EventAtom) -> String {
         EventKind::YellowCard => ("yellow_card", None),
         EventKind::RedCard => ("red_card", None),
         EventKind::Offside => ("offside", None),
+        EventKind::Save => ("save", None),
         EventKind::BallEnters(r) => ("ball", Some(format!("enters {}", region(r)))),
         EventKind::BallIn(r) => ("ball", Some(format!("in {}", region(r)))),
         EventKind::HasBall => ("has_ball", None),

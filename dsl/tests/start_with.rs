@@ -199,3 +199,29 @@ fn facing_takes_a_param() {
     let env = Env::new(s, 0).unwrap();
     assert_eq!(env.game().team(Side::Left)[1].facing, glam::Vec2::Y);
 }
+
+/// A save is also an event `reward on` can pay: the shooter's side is paid `opponent_save`, the
+/// keeper's side `save` (here the penalty drill, the left agent shooting).
+#[test]
+fn a_save_is_an_event_rewards_can_pay() {
+    let source = "scenario s {\n  extends academy\n  start with penalty_kick for left\n  team left { GK at (-1, 0) CF at (0.75, 0) }\n  team right { GK at (-1, 0) }\n  end when score or save\n  reward scoring\n  reward on opponent_save -1\n  reward on save 5\n}\n";
+    let s = compile(source, "s.tl").unwrap_or_else(|d| panic!("{}", d.render_plain())).scenario;
+    let again = compile(&scenario_to_tl(&s), "again.tl").unwrap_or_else(|d| panic!("{}", d.render_plain()));
+    assert_eq!(again.scenario, s);
+    let mut saves = 0;
+    for seed in 0..30 {
+        let mut env = Env::new(s.clone(), seed).unwrap();
+        let mut total = 0.0;
+        loop {
+            let out = env.step(&[Action::Shot]).unwrap();
+            total += env.rewards()[0];
+            if out.terminated || out.truncated {
+                break;
+            }
+        }
+        let expected = if env.game().score()[0] == 1 { 1.0 } else { -1.0 };
+        saves += usize::from(expected < 0.0);
+        assert_eq!(total, expected, "seed {seed}");
+    }
+    assert!(saves > 0, "no penalty was saved in 30");
+}

@@ -12,7 +12,7 @@ use crate::suggest;
 use crate::syntax::{self, Repeat, RewardOn};
 
 /// The events of the language, each of the controller's own team (or about the ball).
-pub(crate) const EVENT_NAMES: [&str; 17] = [
+pub(crate) const EVENT_NAMES: [&str; 18] = [
     "goal_for",
     "goal_against",
     "shot",
@@ -28,6 +28,7 @@ pub(crate) const EVENT_NAMES: [&str; 17] = [
     "yellow_card",
     "red_card",
     "offside",
+    "save",
     "has_ball",
     "ball",
 ];
@@ -35,7 +36,7 @@ pub(crate) const EVENT_NAMES: [&str; 17] = [
 /// The events that have an `opponent_` form (the same event done by the other team). Goals and
 /// possession come as pairs (`goal_for`/`goal_against`, `possession_won`/`possession_lost`), and
 /// `ball` has no team.
-pub(crate) const OPPONENT_FORMS: [&str; 12] = [
+pub(crate) const OPPONENT_FORMS: [&str; 13] = [
     "shot",
     "shot_on_target",
     "pass",
@@ -47,6 +48,7 @@ pub(crate) const OPPONENT_FORMS: [&str; 12] = [
     "yellow_card",
     "red_card",
     "offside",
+    "save",
     "has_ball",
 ];
 
@@ -257,6 +259,7 @@ fn event_kind(base: &str, e: &syntax::Event, r: &mut Reader<'_>) -> Option<Event
             "card" => EventKind::Card,
             "yellow_card" => EventKind::YellowCard,
             "red_card" => EventKind::RedCard,
+            "save" => EventKind::Save,
             _ => EventKind::Offside,
         }),
     }

@@ -26,10 +26,10 @@ impl EndTracker {
     /// Whether the scenario's conditions end the episode after a step that left `game` (score,
     /// game mode, ball owner, ball position, and the match for `When` conditions, read in the
     /// global frame), `steps` being the number of steps taken this episode.
-    pub(crate) fn terminated(&mut self, scenario: &Scenario, game: &Match, steps: u32) -> bool {
+    /// `saved`: [`EndTracker::save`] found a save in this step.
+    pub(crate) fn terminated(&mut self, scenario: &Scenario, game: &Match, steps: u32, saved: bool) -> bool {
         let (score, mode, owner) = (game.score(), game.mode(), game.owner().map(|o| o.0));
         let ball = world_to_obs(game.ball().xy());
-        let saved = self.saved(game);
         let taken = self.last_mode != GameMode::Normal && mode == GameMode::Normal;
         self.last_mode = mode;
         let extra = scenario.end_when.iter().any(|c| match c {
@@ -68,28 +68,29 @@ impl EndTracker {
         self.shot = None;
     }
 
-    /// Whether a goalkeeper saved a shot during the last step: the shot of one team, touched
-    /// by nobody else since, was next touched by the other team's keeper and did not go in. A
-    /// keeper who catches it, takes it at his feet or parries it over a line saves it at once; one
-    /// who only deflects it saves it once the ball is no longer heading into his goal (a
-    /// fingertip that the ball beats is a goal, not a save).
-    fn saved(&mut self, game: &Match) -> bool {
+    /// Judges whether a goalkeeper saved a shot during the last step and, if so, records
+    /// [`Event::Save`] among the step's events (for `reward on save`) and returns true. A save:
+    /// the shot of one team, touched by nobody else since, was next touched by the other team's
+    /// keeper and did not go in. A keeper who catches it, takes it at his feet or parries it over
+    /// a line saves it at once; one who only deflects it saves it once the ball is no longer
+    /// heading into his goal (a fingertip that the ball beats is a goal, not a save).
+    pub(crate) fn save(&mut self, game: &mut Match) -> bool {
         let keeper = |side: Side, player: usize| game.team(side).get(player).is_some_and(|p| p.is_keeper());
-        let mut saved = false;
+        let mut saved = None;
         for event in game.events() {
             match *event {
                 Event::Shot { side, .. } => {
                     self.shot = Some(side);
-                    saved = false;
+                    saved = None;
                 }
                 Event::PossessionWon { side, player, .. } | Event::OutOfPlay { side, player: Some(player) }
                     if self.shot.is_some_and(|s| s != side) && keeper(side, player) =>
                 {
-                    saved = true;
+                    saved = Some((side, player));
                     self.shot = None;
                 }
                 Event::Goal { .. } => {
-                    saved = false;
+                    saved = None;
                     self.shot = None;
                 }
                 Event::OutOfPlay { .. } | Event::PossessionWon { .. } | Event::Restart { .. } => self.shot = None,
@@ -100,7 +101,7 @@ impl EndTracker {
             match game.last_touch() {
                 Some((side, player)) if side != shooting && keeper(side, player) => {
                     if !crate::rules::goal::on_target(game.ball()) {
-                        saved = true;
+                        saved = Some((side, player));
                         self.shot = None;
                     }
                 }
@@ -109,7 +110,10 @@ impl EndTracker {
                 _ => self.shot = None,
             }
         }
-        saved
+        if let Some((side, player)) = saved {
+            game.record(Event::Save { side, player });
+        }
+        saved.is_some()
     }
 }
 
@@ -144,9 +148,9 @@ mod tests {
         let s = Scenario { end_episode_on_out_of_play: true, ..Scenario::default() };
         let mut t = EndTracker::default();
         // First observation non-normal does not end.
-        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::ThrowIn, None, [0.0; 2]), 1));
-        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1));
-        assert!(t.terminated(&s, set(&mut g, [0, 0], GameMode::Corner, None, [0.0; 2]), 1));
+        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::ThrowIn, None, [0.0; 2]), 1, false));
+        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1, false));
+        assert!(t.terminated(&s, set(&mut g, [0, 0], GameMode::Corner, None, [0.0; 2]), 1, false));
     }
 
     #[test]
@@ -155,10 +159,10 @@ mod tests {
         let s = Scenario { end_episode_on_possession_change: true, ..Scenario::default() };
         let mut t = EndTracker::default();
         t.reset(Some(Side::Left), GameMode::Normal);
-        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1));
-        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, Some(Side::Left), [0.0; 2]), 1));
-        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1));
-        assert!(t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, Some(Side::Right), [0.0; 2]), 1));
+        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1, false));
+        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, Some(Side::Left), [0.0; 2]), 1, false));
+        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1, false));
+        assert!(t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, Some(Side::Right), [0.0; 2]), 1, false));
     }
 
     #[test]
@@ -173,9 +177,9 @@ mod tests {
             ..Scenario::default()
         };
         let mut t = EndTracker::default();
-        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.3, 0.0]), 49));
-        assert!(t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.3, 0.0]), 50));
-        assert!(t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [-0.3, 0.1]), 2));
+        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.3, 0.0]), 49, false));
+        assert!(t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.3, 0.0]), 50, false));
+        assert!(t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [-0.3, 0.1]), 2, false));
     }
 
     #[test]
@@ -186,23 +190,23 @@ mod tests {
             ..Scenario::default()
         };
         let mut t = EndTracker::default();
-        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1));
+        assert!(!t.terminated(&s, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 1, false));
         g.score = [0, 1];
-        assert!(t.terminated(&s, set(&mut g, [0, 1], GameMode::Normal, None, [0.0; 2]), 2));
+        assert!(t.terminated(&s, set(&mut g, [0, 1], GameMode::Normal, None, [0.0; 2]), 2, false));
         let steps = Scenario {
             end_when: vec![EndCondition::When(Condition::Steps { op: Comparison::Ge, steps: 3 })],
             ..Scenario::default()
         };
-        assert!(!t.terminated(&steps, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 2));
-        assert!(t.terminated(&steps, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 3));
+        assert!(!t.terminated(&steps, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 2, false));
+        assert!(t.terminated(&steps, set(&mut g, [0, 0], GameMode::Normal, None, [0.0; 2]), 3, false));
     }
 
     #[test]
     fn score_ends_only_when_asked() {
         let mut g = game();
         let mut t = EndTracker::default();
-        assert!(!t.terminated(&Scenario::default(), set(&mut g, [1, 0], GameMode::Normal, None, [0.0; 2]), 1));
+        assert!(!t.terminated(&Scenario::default(), set(&mut g, [1, 0], GameMode::Normal, None, [0.0; 2]), 1, false));
         let s = Scenario { end_episode_on_score: true, ..Scenario::default() };
-        assert!(t.terminated(&s, set(&mut g, [0, 1], GameMode::Normal, None, [0.0; 2]), 1));
+        assert!(t.terminated(&s, set(&mut g, [0, 1], GameMode::Normal, None, [0.0; 2]), 1, false));
     }
 }

@@ -106,8 +106,10 @@ impl Env {
             checkpoint_total += bonus;
             self.state.rewards[i] = plan.scoring * r + bonus;
         }
+        // A save is judged from the whole step, then paid and ended on like the match's events.
+        let saved = self.state.end.save(&mut self.state.game);
         let event_total = self.pay_event_rewards();
-        let terminated = self.state.end.terminated(&self.scenario, &self.state.game, self.state.steps);
+        let terminated = self.state.end.terminated(&self.scenario, &self.state.game, self.state.steps, saved);
         let truncated = self.state.steps > self.scenario.game_duration;
         let (hooks_end, script_reward, script_errors) = self.run_hooks()?;
         let terminated = terminated || hooks_end;

@@ -160,6 +160,7 @@ fn happened(atom: &EventAtom, event: &Event, view: &Viewpoint<'_>) -> bool {
         (EventKind::Card | EventKind::YellowCard, Event::YellowCard { side, player }) => (side, Some(player)),
         (EventKind::Card | EventKind::RedCard, Event::RedCard { side, player }) => (side, Some(player)),
         (EventKind::Offside, Event::Offside { side, player }) => (side, Some(player)),
+        (EventKind::Save, Event::Save { side, player }) => (side, Some(player)),
         _ => return false,
     };
     team == watched(atom, view.side) && (!atom.by_player || player == Some(view.player))

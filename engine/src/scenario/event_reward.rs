@@ -109,6 +109,9 @@ pub enum EventKind {
     RedCard,
     /// Caught offside (player: the offender).
     Offside,
+    /// The team's goalkeeper saved a shot of the other team (player: the keeper); see
+    /// [`crate::Event::Save`].
+    Save,
     /// The ball goes from outside the region to inside it during a step (no player, no team:
     /// the region is in the controller's team frame).
     BallEnters(Region),

@@ -112,6 +112,16 @@ pub enum Event {
         /// The offender (index in his team).
         player: usize,
     },
+    /// A goalkeeper of `side` saved a shot of the other team: the shot, touched by nobody else
+    /// since, was caught, taken at his feet, parried over a line, or deflected so that it no
+    /// longer heads into the goal. Judged by the env after each step (see `Env::step`), so it
+    /// comes last among a step's events.
+    Save {
+        /// The keeper's team.
+        side: Side,
+        /// The keeper (index in his team).
+        player: usize,
+    },
     /// A restart awarded to `side` (kickoffs after goals and half-time included).
     Restart {
         /// The team taking it.

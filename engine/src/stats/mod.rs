@@ -79,7 +79,7 @@ impl MatchStats {
             Event::PossessionWon { side, .. } => self.teams[side.index()].possessions_won += 1,
             Event::OutOfPlay { side, .. } => self.teams[side.index()].out_of_play += 1,
             Event::Foul { side, .. } => self.teams[side.index()].fouls += 1,
-            Event::Advantage { .. } => {}
+            Event::Advantage { .. } | Event::Save { .. } => {}
             Event::YellowCard { side, .. } => self.teams[side.index()].yellow_cards += 1,
             Event::RedCard { side, .. } => self.teams[side.index()].red_cards += 1,
             Event::Offside { side, .. } => self.teams[side.index()].offsides += 1,

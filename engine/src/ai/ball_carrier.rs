@@ -9,7 +9,7 @@ use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::game::kick::shot_target;
 use crate::game::{Kick, KickKind, KickTarget};
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
-use crate::player::{Player, nearest_distance};
+use crate::player::{Player, SPRINT_SPEED, nearest_distance};
 use crate::rng::MatchRng;
 
 /// Distance (m) from `p` to the segment `a`–`b`.
@@ -35,6 +35,49 @@ fn shot_value(from: Vec2, opponents: &[Player], frame: crate::geometry::TeamFram
         }
     }
     value
+}
+
+/// Whether the carrier at `from` (team frame, m), running at `velocity` (team frame, m/s), takes
+/// on a shot at all: GRF's AI shoots only near its ideal spot and with a lane to goal (GRF 2.10's
+/// on-the-ball AI). The spot is 7 m out in front of goal; closeness to it, 1 − d/16 m, smoothed
+/// by a sine, must exceed 0.1 (within about 12.7 m of it). The lane is the best of three aims, at
+/// the posts and the centre a metre behind the line: each opponent who could get to the ball's
+/// line before it (ball at a third of a pass's pace, he at sprint pace) adds danger, and the odds
+/// are 1 − danger. He shoots when √odds + U(0, 0.5) > 0.5.
+fn takes_on_shot(
+    from: Vec2,
+    velocity: Vec2,
+    opponents: &[Player],
+    frame: crate::geometry::TeamFrame,
+    rng: &mut MatchRng,
+) -> bool {
+    let closeness = 1.0 - (from.distance(Vec2::new(HALF_LENGTH - 7.0, 0.0)) / 16.0).clamp(0.0, 1.0);
+    let ideal = libm::sinf((closeness - 0.5) * std::f32::consts::PI) * 0.5 + 0.5;
+    if ideal <= 0.1 {
+        return false;
+    }
+    let origin = from + velocity * 0.12;
+    let odds = [-3.6, 0.0, 3.6]
+        .into_iter()
+        .map(|y| {
+            let target = Vec2::new(HALF_LENGTH + 1.0, y);
+            let line = target - origin;
+            let mut danger = 0.0;
+            for o in opponents.iter().filter(|o| o.active) {
+                let at = frame.vec2(o.position) + frame.vec2(o.velocity) * 0.2;
+                let u = (at - origin).dot(line) / line.length_squared().max(1e-6);
+                if !(0.0..=1.2).contains(&u) {
+                    continue;
+                }
+                let meet = origin + line * u.min(1.0);
+                let his_time = (at.distance(meet) + 1.0) / SPRINT_SPEED;
+                let ball_time = (0.7 + (meet - origin).length() * u * 0.03) / 3.0;
+                danger += (ball_time - his_time + 0.5).clamp(0.0, 1.0);
+            }
+            1.0 - danger.clamp(0.0, 1.0)
+        })
+        .fold(0.0f32, f32::max);
+    odds.sqrt() + 0.5 * rng.unit() > 0.5
 }
 
 /// The plan for the ball carrier `g`.
@@ -83,7 +126,11 @@ pub(crate) fn plan(
     }
 
     // Shot.
-    let base = shot_value(pos_t, opponents, frame);
+    let base = if takes_on_shot(pos_t, frame.vec2(me.velocity), opponents, frame, rng) {
+        shot_value(pos_t, opponents, frame)
+    } else {
+        0.0
+    };
     let shot = if base > 0.0 {
         base * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 } + rng.noise(noise)
     } else {
@@ -200,6 +247,49 @@ pub(crate) fn plan(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn shots_are_taken_near_the_ideal_spot_with_a_lane_only() {
+        use crate::geometry::{Side, TeamFrame};
+        use crate::player::Role;
+        let frame = TeamFrame::of(Side::Left);
+        let keeper = Player::new(Side::Right, 0, Role::GK, Vec2::new(HALF_LENGTH - 1.0, 0.0), Vec2::ZERO);
+        let mut rng = MatchRng::new(1, 0, true);
+        for _ in 0..50 {
+            // 27 m out, 20 m from the spot 7 m out: GRF's AI never shoots from there.
+            assert!(!takes_on_shot(
+                Vec2::new(HALF_LENGTH - 27.0, 0.0),
+                Vec2::ZERO,
+                std::slice::from_ref(&keeper),
+                frame,
+                &mut rng
+            ));
+            // 12 m out in front of goal, only the keeper on his line: always.
+            assert!(takes_on_shot(
+                Vec2::new(HALF_LENGTH - 12.0, 0.0),
+                Vec2::ZERO,
+                std::slice::from_ref(&keeper),
+                frame,
+                &mut rng
+            ));
+        }
+        // The same spot with three defenders across the lanes a few metres ahead: seldom.
+        let wall: Vec<Player> = (0..3)
+            .map(|i| {
+                Player::new(
+                    Side::Right,
+                    i + 1,
+                    Role::CB,
+                    Vec2::new(HALF_LENGTH - 9.0, -1.5 + 1.5 * i as f32),
+                    Vec2::ZERO,
+                )
+            })
+            .collect();
+        let shots = (0..50)
+            .filter(|_| takes_on_shot(Vec2::new(HALF_LENGTH - 12.0, 0.0), Vec2::ZERO, &wall, frame, &mut rng))
+            .count();
+        assert!(shots < 10, "{shots} of 50");
+    }
 
     #[test]
     fn segment_distance() {

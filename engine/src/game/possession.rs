@@ -101,11 +101,12 @@ impl Match {
             }
             if p.is_keeper()
                 && in_penalty_area(p.position.x, p.position.y, -p.side.attack_sign())
-                && d2 < HAND_REACH * HAND_REACH
+                && d2 < DIVE_REACH * DIVE_REACH
                 && self.ball.position.z < HAND_HEIGHT
             {
-                // A keeper in his own area takes a dribbled ball with his hands: nobody holds it
-                // (GRF's keeper claims any ball no one retains, and a slow one he always catches).
+                // A keeper in his own area takes a dribbled ball with his hands, diving at the
+                // carrier's feet if he must: nobody holds it (GRF's keeper claims any ball no one
+                // retains with his deflect and dive animations, and a slow one he always catches).
                 self.claimed(owner, q);
                 return;
             }

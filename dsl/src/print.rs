@@ -2,11 +2,15 @@
 //! scenario (a JSON file, one built in code) can become a text file to edit. Compiling the output
 //! gives the same scenario back (tested on every stdlib scenario).
 
+mod draws;
+
 use std::fmt::Write;
 
+use draws::Draws;
+
 use touchline_engine::scenario::{
-    Behaviour, Body, Comparison, Condition, Criterion, Distribution, EndCondition, EventAtom, EventKind, EventReward,
-    EventStep, EventTeam, Facing, Owner, PassKind, Region, Require, RewardKind, Sample, Spot, Stage, Target,
+    Behaviour, Body, Comparison, Condition, Criterion, EndCondition, EventAtom, EventKind, EventReward, EventStep,
+    EventTeam, Facing, Owner, PassKind, Region, Require, RewardKind, Sample, Shared, Spot, Stage, Target,
 };
 use touchline_engine::{GameMode, PlayerEntry, Scenario, Side};
 
@@ -39,13 +43,23 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
     } else {
         d
     };
-    statements(&mut out, s, &base, 2, true);
+    // A shared draw is a param its uses name, declared once for the scenario and its lessons.
+    let lessons = s.curriculum.iter().flat_map(|c| c.lessons.iter().map(|l| &l.scenario));
+    let draws = Draws::declare(std::iter::once(s).chain(lessons));
+    for (name, expr) in draws.params() {
+        let _ = writeln!(out, "  param {name} = {expr}");
+    }
+    statements(&mut out, s, &base, 2, true, &draws.in_lesson(s).0);
     if let Some(c) = &s.curriculum {
         let plain = Scenario { curriculum: None, ..s.clone() };
         out.push_str("  curriculum {\n");
         for l in &c.lessons {
             let _ = writeln!(out, "    lesson {} {{", l.name);
-            statements(&mut out, &l.scenario, &plain, 6, false);
+            let (own, assign) = draws.in_lesson(&l.scenario);
+            for (name, expr) in assign {
+                let _ = writeln!(out, "      {name} = {expr}");
+            }
+            statements(&mut out, &l.scenario, &plain, 6, false, &own);
             if let Some(a) = &l.advance {
                 let _ = writeln!(out, "      {}", advance(a));
             }
@@ -59,7 +73,8 @@ pub fn scenario_to_tl(s: &Scenario) -> String {
 
 /// The statements that turn `base` into `s`, at `indent` spaces; `top` writes both teams even
 /// when they match `base` (a scenario's own body).
-fn statements(out: &mut String, s: &Scenario, base: &Scenario, indent: usize, top: bool) {
+/// `draws` names the shared draws.
+fn statements(out: &mut String, s: &Scenario, base: &Scenario, indent: usize, top: bool, draws: &Draws) {
     let pad = " ".repeat(indent);
     if s.game_duration != base.game_duration {
         let _ = writeln!(out, "{pad}game_duration {}", s.game_duration);
@@ -137,7 +152,7 @@ fn statements(out: &mut String, s: &Scenario, base: &Scenario, indent: usize, to
     }
     // A restart puts the ball on its spot: the compiler writes the spot as the ball's start.
     if s.start_with.is_none() && (s.ball_position, &s.ball_random) != (base.ball_position, &base.ball_random) {
-        let _ = writeln!(out, "{pad}ball {}", place(s.ball_position, s.ball_random.as_ref()));
+        let _ = writeln!(out, "{pad}ball {}", place(s.ball_position, s.ball_random.as_ref(), draws));
     }
     if let Some([x, y]) =
         s.odd_episode_ball_position.filter(|_| s.odd_episode_ball_position != base.odd_episode_ball_position)
@@ -151,7 +166,7 @@ fn statements(out: &mut String, s: &Scenario, base: &Scenario, indent: usize, to
         let _ = writeln!(out, "{pad}team {side} {{");
         let side = if side == "left" { Side::Left } else { Side::Right };
         for p in team {
-            let _ = writeln!(out, "{pad}  {}", player(p, side));
+            let _ = writeln!(out, "{pad}  {}", player(p, side, draws));
         }
         let _ = writeln!(out, "{pad}}}");
     }
@@ -197,8 +212,8 @@ fn advance(c: &Criterion) -> String {
     line
 }
 
-fn player(p: &PlayerEntry, side: Side) -> String {
-    let mut line = format!("{} {}", p.role, place([p.x, p.y], p.random.as_ref()));
+fn player(p: &PlayerEntry, side: Side, draws: &Draws) -> String {
+    let mut line = format!("{} {}", p.role, place([p.x, p.y], p.random.as_ref(), draws));
     if p.lazy {
         line.push_str(" lazy");
     }
@@ -332,10 +347,10 @@ fn game_mode(mode: GameMode) -> &'static str {
     }
 }
 
-fn place(nominal: [f32; 2], random: Option<&Spot>) -> String {
+fn place(nominal: [f32; 2], random: Option<&Spot>, draws: &Draws) -> String {
     match random {
         None => format!("at ({}, {})", number(nominal[0]), number(nominal[1])),
-        Some(Spot::Point { x, y }) => format!("at ({}, {})", sample(x), sample(y)),
+        Some(Spot::Point { x, y }) => format!("at ({}, {})", sample(x, draws), sample(y, draws)),
         Some(Spot::In(r)) => format!("in {}", region(r)),
         Some(Spot::OneOf(points)) => format!(
             "at choice[{}]",
@@ -357,16 +372,15 @@ fn place(nominal: [f32; 2], random: Option<&Spot>) -> String {
     }
 }
 
-fn sample(s: &Sample) -> String {
+/// A coordinate: a shared draw by its param's name, anything else written out.
+fn sample(s: &Sample, draws: &Draws) -> String {
+    if let Some(name) = draws.name(s) {
+        return name.to_owned();
+    }
     match s {
         Sample::Fixed(v) => number(*v),
-        // The printed text draws it on its own: a shared draw keeps its key only in JSON.
-        Sample::Shared(shared) => sample(&Sample::Random(shared.of.clone())),
-        Sample::Random(Distribution::Uniform(a, b)) => format!("uniform({}, {})", number(*a), number(*b)),
-        Sample::Random(Distribution::Normal(m, sd)) => format!("normal({}, {})", number(*m), number(*sd)),
-        Sample::Random(Distribution::Choice(vs)) => {
-            format!("choice[{}]", vs.iter().map(|v| number(*v)).collect::<Vec<_>>().join(", "))
-        }
+        // A shared draw no param can express (a hand-written JSON's) is drawn at each use.
+        Sample::Random(d) | Sample::Shared(Shared { of: d, .. }) => draws::text(d, number),
     }
 }
 

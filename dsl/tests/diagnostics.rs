@@ -195,6 +195,7 @@ fixtures! {
     relative_to_the_ball
     relative_unknown_player
     param_on_both_axes
+    lesson_param_on_both_axes
 }
 
 #[test]

@@ -134,3 +134,60 @@ fn compiled_again(text: &str) -> touchline_engine::Scenario {
     let s = compile(text, "s.tl").unwrap().scenario;
     touchline_dsl::load_json(&serde_json::to_string(&s).unwrap(), "s.json").unwrap()
 }
+
+/// `.tl` keeps a shared draw: the printed file declares a `param` for it and names it at each use
+/// (a lesson that changes it assigns it), so compiling the text again gives the same scenario,
+/// which draws the same places.
+#[test]
+fn a_shared_draw_survives_the_tl_round_trip() {
+    let text = "scenario s {\n  extends academy\n  param height = uniform(-0.3, 0.3)\n  param dx = uniform(-5 m, 5 m)\n  ball at (dx, 0)\n  team left {\n    GK at (-1, 0)\n    CF at (0.5, height)\n    LM at (0.3, height)\n    RM at (dx, 0.2)\n  }\n  team right { GK at (-1, 0) }\n  curriculum {\n    lesson narrow { }\n    lesson wide { dx = normal(0 m, 4 m) }\n    advance when success_rate >= 0.8 over 20 episodes\n  }\n}\n";
+    let s = compile(text, "s.tl").unwrap().scenario;
+    let printed = touchline_dsl::scenario_to_tl(&s);
+    let again = compile(&printed, "again.tl").unwrap_or_else(|d| panic!("{printed}\n{}", d.render_plain()));
+    assert!(again.warnings.items.is_empty(), "{}", again.warnings.render_plain());
+    let again = again.scenario;
+    assert!(printed.contains("param draw2 = uniform(-5 m, 5 m)"), "{printed}");
+    assert!(printed.contains("draw2 = normal(0 m, 4 m)"), "{printed}");
+    // A key is a hash of the param's name, and the printed names are `draw1`, `draw2`, …: the
+    // same scenario up to that renaming.
+    assert_eq!(keys_by_first_use(&again), keys_by_first_use(&s), "{printed}");
+    assert_eq!(touchline_dsl::scenario_to_tl(&again), printed, "printing is a fixed point");
+    let lessons = |s: &touchline_engine::Scenario| {
+        s.curriculum.as_ref().unwrap().lessons.iter().map(|l| l.scenario.clone()).collect::<Vec<_>>()
+    };
+    for (a, b) in std::iter::once((s.clone(), again.clone())).chain(lessons(&s).into_iter().zip(lessons(&again))) {
+        for episode in 0..20 {
+            let (p, q) = (a.draw(3, episode), b.draw(3, episode));
+            let places = |p: &touchline_engine::scenario::Placement| {
+                let xy: Vec<[f32; 2]> = p.left.iter().chain(&p.right).map(|e| [e.x, e.y]).collect();
+                (p.ball, xy)
+            };
+            assert_eq!(places(&p), places(&q), "episode {episode}");
+            assert_eq!(p.left[1].y, p.left[2].y, "one draw for both forwards");
+        }
+    }
+}
+
+/// The scenario as JSON with every shared key replaced by its rank of first appearance.
+fn keys_by_first_use(s: &touchline_engine::Scenario) -> serde_json::Value {
+    fn walk(v: &mut serde_json::Value, seen: &mut Vec<u64>) {
+        match v {
+            serde_json::Value::Object(map) => {
+                if let Some(key) = map.get_mut("shared") {
+                    let k = key.as_u64().unwrap();
+                    let rank = seen.iter().position(|s| *s == k).unwrap_or_else(|| {
+                        seen.push(k);
+                        seen.len() - 1
+                    });
+                    *key = serde_json::Value::from(rank);
+                }
+                map.values_mut().for_each(|v| walk(v, seen));
+            }
+            serde_json::Value::Array(items) => items.iter_mut().for_each(|v| walk(v, seen)),
+            _ => {}
+        }
+    }
+    let mut v = serde_json::to_value(s).unwrap();
+    walk(&mut v, &mut Vec::new());
+    v
+}

@@ -154,6 +154,8 @@ impl Compiler {
         };
         let mut reader = Reader::new(source, &mut self.diags, &env);
         body::apply(&body, &mut scenario, &mut origins, &mut reader);
+        // A lesson's own places can share a draw across axes as a scenario body's can.
+        reader.warn_repeated_draws();
         let own = l.statements.iter().find_map(|s| match &s.kind {
             StatementKind::Advance(a) => Some(a),
             _ => None,

@@ -14,6 +14,7 @@ mod pitch;
 mod relative;
 mod start;
 
+pub(crate) use pitch::{BALL_X_METRES, BALL_Y_METRES, PLAYER_X_METRES, PLAYER_Y_METRES};
 pub(crate) use start::restart_name;
 mod value;
 

@@ -154,10 +154,11 @@ fn statements(out: &mut String, s: &Scenario, base: &Scenario, indent: usize, to
     if s.start_with.is_none() && (s.ball_position, &s.ball_random) != (base.ball_position, &base.ball_random) {
         let _ = writeln!(out, "{pad}ball {}", place(s.ball_position, s.ball_random.as_ref(), draws));
     }
-    if let Some([x, y]) =
-        s.odd_episode_ball_position.filter(|_| s.odd_episode_ball_position != base.odd_episode_ball_position)
-    {
-        let _ = writeln!(out, "{pad}on odd episodes ball at ({}, {})", number(x), number(y));
+    let odd_ball = (s.odd_episode_ball_position, &s.odd_episode_ball_random);
+    if odd_ball != (base.odd_episode_ball_position, &base.odd_episode_ball_random) && odd_ball != (None, &None) {
+        let nominal = s.odd_episode_ball_position.unwrap_or(s.ball_position);
+        let _ =
+            writeln!(out, "{pad}on odd episodes ball {}", place(nominal, s.odd_episode_ball_random.as_ref(), draws));
     }
     for (side, team, before) in [("left", &s.left_team, &base.left_team), ("right", &s.right_team, &base.right_team)] {
         if !top && team == before {

@@ -103,7 +103,7 @@ fixtures! {
     wrong_type_bool
     wrong_type_region
     wrong_type_weight
-    odd_ball_random
+    odd_ball_in_a_circle
     wrong_unit_duration
     wrong_unit_position
     distance_without_unit

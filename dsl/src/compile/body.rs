@@ -142,17 +142,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
                     origins.ball = Some(Loc { source: r.source.clone(), span: st.span });
                 }
             }
-            StatementKind::OddBall(place) => match r.place(place, Frame::Ball) {
-                Some((nominal, None)) => s.odd_episode_ball_position = Some(nominal),
-                Some((_, Some(_))) => r.error_help(
-                    Code::WrongType,
-                    "on odd episodes the ball starts at a fixed point",
-                    st.span,
-                    "random place not allowed here",
-                    "write `on odd episodes ball at (x, y)`; to randomise every episode, make `ball` random instead",
-                ),
-                None => {}
-            },
+            StatementKind::OddBall(place) => super::relative::odd_ball(place, s, r, &mut deferred.places),
             StatementKind::SwapTeams => s.swap_teams_on_odd_episodes = true,
             StatementKind::Team(t) => team(t, s, origins, r, &mut deferred),
             StatementKind::Behaviour { player, behaviour } => deferred.statements.push((player, behaviour)),

@@ -14,8 +14,8 @@ use touchline_engine::scenario::{Anchor, Body, Spot, relative_cycle};
 
 use super::pitch::{BALL_X_METRES, BALL_Y_METRES, PLAYER_X_METRES, PLAYER_Y_METRES};
 use super::value::{Frame, Reader};
-use crate::diagnostic::Code;
-use crate::syntax::{BinaryOp, Expr, ExprKind, Place};
+use crate::diagnostic::{Code, Diagnostic};
+use crate::syntax::{BinaryOp, Expr, ExprKind, Place, Span};
 
 /// The functions of a relative place.
 const FUNCTIONS: [&str; 4] = ["behind", "ahead", "beside", "near"];
@@ -24,6 +24,8 @@ const FUNCTIONS: [&str; 4] = ["behind", "ahead", "beside", "near"];
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Target {
     Ball,
+    /// The ball in odd episodes (`on odd episodes ball at …`).
+    OddBall,
     Left(usize),
     Right(usize),
 }
@@ -63,53 +65,77 @@ fn is_reference(e: &Expr) -> bool {
     }
 }
 
+/// `on odd episodes ball at PLACE`: a fixed point, a random place, or a relative one (deferred
+/// like the others, and placed from the bodies as they are drawn in odd episodes).
+pub(crate) fn odd_ball<'a>(place: &'a Place, s: &mut Scenario, r: &mut Reader<'_>, deferred: &mut Vec<Deferred<'a>>) {
+    deferred.retain(|d| d.target != Target::OddBall);
+    if let (true, Place::At(expr)) = (is_relative(place), place) {
+        // Its nominal point is set once the anchor is read.
+        s.odd_episode_ball_position = Some(s.ball_position);
+        s.odd_episode_ball_random = None;
+        deferred.push(Deferred { target: Target::OddBall, expr });
+    } else if let Some((nominal, random)) = r.place(place, Frame::Ball) {
+        s.odd_episode_ball_position = Some(nominal);
+        s.odd_episode_ball_random = random;
+    }
+}
+
 /// Reads every deferred relative place into its entry's [`Spot::Relative`], sets the entries'
 /// nominal points, and reports places that depend on each other in a circle (`tl::E151`).
 pub(crate) fn resolve(deferred: &[Deferred<'_>], s: &mut Scenario, r: &mut Reader<'_>) {
     let mut spans = Vec::new();
     for d in deferred {
-        let frame = if d.target == Target::Ball { Frame::Ball } else { Frame::Player };
+        let frame = if matches!(d.target, Target::Ball | Target::OddBall) { Frame::Ball } else { Frame::Player };
         let Some(anchor) = anchor(d.expr, frame, s, r) else { continue };
         let spot = Some(Spot::Relative(anchor));
         match d.target {
             Target::Ball => s.ball_random = spot,
+            Target::OddBall => s.odd_episode_ball_random = spot,
             Target::Left(i) => s.left_team[i].random = spot,
             Target::Right(i) => s.right_team[i].random = spot,
         }
         spans.push((d.target, d.expr.span));
     }
-    if let Some(cycle) = relative_cycle(&s.left_team, &s.right_team, s.ball_random.as_ref()) {
-        let names: Vec<String> = cycle.iter().map(|b| body_name(*b, s)).collect();
-        let span_of = |b: Body| spans.iter().find(|(t, _)| body_of(*t) == b).map(|(_, span)| *span);
-        if let Some(span) = cycle.first().and_then(|b| span_of(*b)) {
-            let mut d = crate::diagnostic::Diagnostic::new(
-                Code::PlacementCycle,
-                format!("these places depend on each other in a circle: {}", names.join(" → ")),
-                r.source,
-                span,
-                "placed from the next one",
-            )
-            .with_help(
-                "one of them must be placed on its own (`at (x, y)`, `in REGION`) for the others to be drawn from it",
-            );
-            for b in cycle.iter().skip(1) {
-                if let Some(span) = span_of(*b) {
-                    d = d.with_label(span, "in the circle");
-                }
-            }
-            r.diags.push(d);
+    // In odd episodes the odd ball's place stands for the ball's.
+    let circles = [(s.ball_random.as_ref(), Target::Ball), (s.odd_episode_ball_random.as_ref(), Target::OddBall)];
+    for (ball, ball_target) in circles {
+        if ball_target == Target::OddBall && ball.is_none() {
+            continue;
         }
-        return;
+        if let Some(cycle) = relative_cycle(&s.left_team, &s.right_team, ball) {
+            report_cycle(&cycle, &spans, ball_target, s, r);
+            return;
+        }
     }
     s.settle_relative();
 }
 
-fn body_of(t: Target) -> Body {
-    match t {
-        Target::Ball => Body::Ball,
-        Target::Left(i) => Body::Left(i),
-        Target::Right(i) => Body::Right(i),
+/// `tl::E151` on the places of `cycle` (the ball's being `ball`'s place), if this body wrote
+/// one of them.
+fn report_cycle(cycle: &[Body], spans: &[(Target, Span)], ball: Target, s: &Scenario, r: &mut Reader<'_>) {
+    let names: Vec<String> = cycle.iter().map(|b| body_name(*b, s)).collect();
+    let target_of = |b: Body| match b {
+        Body::Ball => ball,
+        Body::Left(i) => Target::Left(i),
+        Body::Right(i) => Target::Right(i),
+    };
+    let span_of = |b: Body| spans.iter().find(|(t, _)| *t == target_of(b)).map(|(_, span)| *span);
+    let Some(span) = cycle.first().and_then(|b| span_of(*b)) else { return };
+    let in_odd = if ball == Target::OddBall { " in odd episodes" } else { "" };
+    let mut d = Diagnostic::new(
+        Code::PlacementCycle,
+        format!("these places depend on each other in a circle{in_odd}: {}", names.join(" → ")),
+        r.source,
+        span,
+        "placed from the next one",
+    )
+    .with_help("one of them must be placed on its own (`at (x, y)`, `in REGION`) for the others to be drawn from it");
+    for b in cycle.iter().skip(1) {
+        if let Some(span) = span_of(*b) {
+            d = d.with_label(span, "in the circle");
+        }
     }
+    r.diags.push(d);
 }
 
 fn body_name(b: Body, s: &Scenario) -> String {

@@ -162,6 +162,7 @@ pub(crate) fn ball_on_the_spot(s: &mut Scenario) {
         s.ball_position = world_to_obs(start.restart().spot);
         s.ball_random = None;
         s.odd_episode_ball_position = None;
+        s.odd_episode_ball_random = None;
     }
 }
 

@@ -92,6 +92,7 @@ fn uses(s: &Scenario) -> Vec<Use> {
         point(p.random.as_ref(), [PLAYER_X_METRES, PLAYER_Y_METRES]);
     }
     point(s.ball_random.as_ref(), [BALL_X_METRES, BALL_Y_METRES]);
+    point(s.odd_episode_ball_random.as_ref(), [BALL_X_METRES, BALL_Y_METRES]);
     out
 }
 

@@ -82,6 +82,12 @@ pub struct Scenario {
     /// scenarios that branch on the episode number (grf.md §2.3).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub odd_episode_ball_position: Option<[f32; 2]>,
+    /// When set, the ball's start in odd episodes is drawn from this at every reset (global frame)
+    /// instead of `ball_random`, with `odd_episode_ball_position` its nominal point (`.tl`:
+    /// `on odd episodes ball at near(left.CF, 3 m)`). A relative spot's anchor names the lists as
+    /// written, as every relative spot's does.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub odd_episode_ball_random: Option<Spot>,
     /// Left team's players, in observation order, in the left team's own frame.
     pub left_team: Vec<PlayerEntry>,
     /// Right team's players, in observation order, in the right team's own frame.
@@ -203,6 +209,7 @@ impl Default for Scenario {
             swap_teams_on_odd_episodes: false,
             ball_random: None,
             odd_episode_ball_position: None,
+            odd_episode_ball_random: None,
             requires: Vec::new(),
             rewards: Vec::new(),
             end_when: Vec::new(),
@@ -268,6 +275,10 @@ impl Scenario {
         if let Some(spot) = &self.ball_random {
             check_spot(spot, "the ball's random start").map_err(|reason| EngineError::InvalidScenario { reason })?;
         }
+        if let Some(spot) = &self.odd_episode_ball_random {
+            check_spot(spot, "the ball's random start in odd episodes")
+                .map_err(|reason| EngineError::InvalidScenario { reason })?;
+        }
         for (side, team) in [("left", &self.left_team), ("right", &self.right_team)] {
             if team.is_empty() || team.len() > MAX_PLAYERS_PER_TEAM {
                 return bad(format!("{side} team has {} players; 1 to 11 are allowed", team.len()));
@@ -297,7 +308,7 @@ impl Scenario {
             }
         }
         let spots = self.left_team.iter().chain(&self.right_team).filter_map(|p| p.random.as_ref());
-        for spot in spots.chain(self.ball_random.as_ref()) {
+        for spot in spots.chain(self.ball_random.as_ref()).chain(self.odd_episode_ball_random.as_ref()) {
             if let Spot::Relative(anchor) = spot {
                 let exists = match anchor.of {
                     Body::Ball => true,
@@ -311,6 +322,12 @@ impl Scenario {
         }
         if let Some(cycle) = relative_cycle(&self.left_team, &self.right_team, self.ball_random.as_ref()) {
             return bad(format!("relative spots place each other in a circle: {cycle:?}"));
+        }
+        // In odd episodes the odd ball's spot stands for the ball's.
+        if let Some(odd) = &self.odd_episode_ball_random
+            && let Some(cycle) = relative_cycle(&self.left_team, &self.right_team, Some(odd))
+        {
+            return bad(format!("relative spots place each other in a circle in odd episodes: {cycle:?}"));
         }
         for r in &self.requires {
             let (Require::MinDistance { a, b, metres } | Require::MaxDistance { a, b, metres }) = r;

@@ -185,7 +185,9 @@ impl Placement {
 impl Scenario {
     /// Whether anything is drawn at reset (a random spot or a random ball).
     pub fn is_randomised(&self) -> bool {
-        self.ball_random.is_some() || self.left_team.iter().chain(&self.right_team).any(|e| e.random.is_some())
+        self.ball_random.is_some()
+            || self.odd_episode_ball_random.is_some()
+            || self.left_team.iter().chain(&self.right_team).any(|e| e.random.is_some())
     }
 
     /// The placement of 0-based episode `episode` under `seed`: the odd-episode team swap and
@@ -197,10 +199,7 @@ impl Scenario {
     pub fn draw(&self, seed: u64, episode: u64) -> Placement {
         let (left, right) = self.teams_for_episode(episode);
         let odd = episode % 2 == 1;
-        let ball = match (odd, self.odd_episode_ball_position) {
-            (true, Some(b)) => b,
-            _ => self.ball_position,
-        };
+        let (ball, ball_spot) = self.ball_start(odd);
         let mut placement = Placement { left: left.to_vec(), right: right.to_vec(), ball, tries: 0, satisfied: false };
         if !self.is_randomised() {
             placement.tries = 1;
@@ -208,17 +207,27 @@ impl Scenario {
             return placement;
         }
         let mut rng = MatchRng::new(seed ^ PLACEMENT_STREAM, episode, true);
-        let ball = self.ball_random.as_ref().filter(|_| !(odd && self.odd_episode_ball_position.is_some()));
         let swapped = odd && self.swap_teams_on_odd_episodes;
         while placement.tries < MAX_PLACEMENT_TRIES {
             placement.tries += 1;
-            fill(&mut placement, left, right, ball, swapped, &mut rng);
+            fill(&mut placement, left, right, ball_spot, swapped, &mut rng);
             if self.requires.iter().all(|r| placement.meets(r)) {
                 placement.satisfied = true;
                 break;
             }
         }
         placement
+    }
+
+    /// The ball's nominal start and the spot it is drawn from in an odd (`odd`) or even episode:
+    /// in odd episodes the odd-episode ball when the scenario has one (a fixed point is drawn from
+    /// nothing).
+    fn ball_start(&self, odd: bool) -> ([f32; 2], Option<&Spot>) {
+        if odd && (self.odd_episode_ball_position.is_some() || self.odd_episode_ball_random.is_some()) {
+            (self.odd_episode_ball_position.unwrap_or(self.ball_position), self.odd_episode_ball_random.as_ref())
+        } else {
+            (self.ball_position, self.ball_random.as_ref())
+        }
     }
 
     /// Sets the nominal point of every relative spot (an entry's `x`, `y`; `ball_position`): its
@@ -250,6 +259,13 @@ impl Scenario {
             [entry.x, entry.y] = [placed.x, placed.y];
         }
         self.ball_position = p.ball;
+        // The odd-episode ball: from the settled players (or the ball's nominal start).
+        if let Some(Spot::Relative(a)) = &self.odd_episode_ball_random {
+            let centre = Anchor { radius: 0.0, ..a.clone() };
+            p.ball = self.odd_episode_ball_position.unwrap_or(self.ball_position);
+            place_pending(&mut p, vec![(Body::Ball, &centre)], false, &mut MatchRng::new(0, 0, true));
+            self.odd_episode_ball_position = Some(p.ball);
+        }
     }
 
     /// The share of `samples` placements (seeds 0.., episode 0) that meet every `require`:
@@ -410,6 +426,36 @@ mod tests {
         s.left_team[1].random = Some(Spot::Relative(Anchor { of: Body::Right(1), offset: [1.0, 0.0], radius: 0.0 }));
         assert_eq!(relative_cycle(&s.left_team, &s.right_team, None), Some(vec![Body::Left(1), Body::Right(1)]));
         assert!(s.validate().is_err());
+    }
+
+    /// The odd-episode ball drawn relative to a player: at his feet in odd episodes (moving with
+    /// his list when the teams swap), the even ball untouched; a ball placed from itself in odd
+    /// episodes is a circle; a scenario without it serialises as before.
+    #[test]
+    fn odd_episode_ball_follows_its_anchor() {
+        let mut s = randomised();
+        s.requires.clear();
+        assert!(!serde_json::to_string(&s).unwrap().contains("odd_episode_ball_random"));
+        s.odd_episode_ball_random = Some(Spot::Relative(Anchor { of: Body::Left(1), offset: [1.0, 0.0], radius: 0.0 }));
+        s.settle_relative();
+        let [x, y] = s.odd_episode_ball_position.unwrap();
+        assert!((ball_start_to_world(x, y) - formation_to_world(Side::Left, 0.5, 0.0) - Vec2::X).length() < 1e-3);
+        assert!(s.validate().is_ok());
+        for swap in [false, true] {
+            s.swap_teams_on_odd_episodes = swap;
+            for episode in 0..40 {
+                let p = s.draw(7, episode);
+                let ball = p.world(Body::Ball);
+                if episode % 2 == 0 {
+                    assert_eq!(p.ball, [0.5, 0.0], "episode {episode}");
+                    continue;
+                }
+                let (cb, ahead) = if swap { (p.world(Body::Right(1)), -1.0) } else { (p.world(Body::Left(1)), 1.0) };
+                assert!((ball - cb - Vec2::new(ahead, 0.0)).length() < 1e-3, "episode {episode}: {ball} {cb}");
+            }
+        }
+        s.odd_episode_ball_random = Some(Spot::Relative(Anchor { of: Body::Ball, offset: [1.0, 0.0], radius: 0.0 }));
+        assert!(s.validate().unwrap_err().to_string().contains("odd episodes"));
     }
 
     #[test]

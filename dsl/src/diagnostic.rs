@@ -45,6 +45,9 @@ pub enum Code {
     UnreadableSource,
     /// Relative places that depend on each other in a circle (`a at b`, `b at a`).
     PlacementCycle,
+    /// A child's `team` puts another role (or no one) at an index its parent's relative places or
+    /// `require`s name.
+    TeamReordered,
     /// A `require` constraint that can never hold, or too rarely for the retry budget.
     Unsatisfiable,
     /// `extends` names no known preset or scenario.
@@ -149,7 +152,7 @@ pub enum Code {
 
 impl Code {
     /// Every code, in numbering order.
-    pub const ALL: [Code; 57] = [
+    pub const ALL: [Code; 58] = [
         Code::Syntax,
         Code::UnknownKey,
         Code::UnknownRole,
@@ -200,6 +203,7 @@ impl Code {
         Code::UnknownRestart,
         Code::RestartShape,
         Code::Facing,
+        Code::TeamReordered,
         Code::OutsideLines,
         Code::NoControllable,
         Code::UnusedImport,
@@ -262,6 +266,7 @@ impl Code {
             Code::UnknownRestart => "tl::E152",
             Code::RestartShape => "tl::E153",
             Code::Facing => "tl::E154",
+            Code::TeamReordered => "tl::E155",
             Code::OutsideLines => "tl::W100",
             Code::NoControllable => "tl::W101",
             Code::UnusedImport => "tl::W102",

@@ -104,6 +104,7 @@ fixtures! {
     wrong_type_region
     wrong_type_weight
     odd_ball_in_a_circle
+    team_reordered
     wrong_unit_duration
     wrong_unit_position
     distance_without_unit

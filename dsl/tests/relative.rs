@@ -191,3 +191,38 @@ fn keys_by_first_use(s: &touchline_engine::Scenario) -> serde_json::Value {
     walk(&mut v, &mut Vec::new());
     v
 }
+
+/// A child's `team` that puts another role (or no one) at an index the parent's places or
+/// `require`s name is `tl::E155` on the child's `team` statement; keeping the role at its index,
+/// or writing the place again, is fine (issue 18).
+#[test]
+fn a_child_team_that_moves_an_anchored_player_is_e155() {
+    let parent = "preset drill {\n  extends academy\n  ball at left.CF + (1 m, 0)\n  on odd episodes ball at near(left.LM, 2 m)\n  team left {\n    GK at (-1, 0)\n    CF at (uniform(0.3, 0.6), 0)\n    LM at (0.3, -0.3)\n  }\n  team right {\n    GK at (-1, 0)\n    CB at behind(left.CF, 3 m)\n  }\n  require distance(left.LM, right.GK) >= 10 m\n}\n";
+    let codes = |child: &str| -> Vec<(String, String)> {
+        let text = format!("{parent}scenario child {{\n  extends drill\n{child}}}\n");
+        match compile(&text, "child.tl") {
+            Ok(_) => Vec::new(),
+            Err(d) => d
+                .items
+                .iter()
+                .map(|d| (d.code.as_str().to_owned(), text[d.span().start..d.span().end].to_owned()))
+                .collect(),
+        }
+    };
+    let e155 = |n| vec![("tl::E155".to_owned(), "team left".to_owned()); n];
+    // The CF (ball, CB) and the LM (odd ball, require) swap places: reported once per player.
+    assert_eq!(codes("  team left { GK at (-1, 0) LM at (0.3, -0.3) CF at (0.5, 0) }\n"), e155(2));
+    // The LM is gone: the odd ball and the require name no one.
+    assert_eq!(codes("  team left { GK at (-1, 0) CF at (0.5, 0) }\n"), e155(1));
+    // Same roles at the same indices, other places: fine.
+    assert_eq!(codes("  team left { GK at (-1, 0) CF at (0.5, 0.1) LM at (0.2, -0.2) RM at (0.2, 0.2) }\n"), vec![]);
+    // Everything that names the moved players written again: fine.
+    let again = "  ball at left.CF + (1 m, 0)\n  on odd episodes ball at near(left.LM, 2 m)\n  team right {\n    GK at (-1, 0)\n    CB at behind(left.CF, 3 m)\n  }\n  require distance(left.LM, right.GK) >= 10 m\n";
+    assert_eq!(codes(&format!("  team left {{ GK at (-1, 0) LM at (0.3, -0.3) CF at (0.5, 0) }}\n{again}")), vec![]);
+    // A new right team: the right GK keeps index 0, so the require still names him.
+    assert_eq!(codes("  team right { GK at (-1, 0) CM at (0.2, 0) }\n"), vec![]);
+    assert_eq!(
+        codes("  team right { CM at (0.2, 0) GK at (-1, 0) }\n"),
+        vec![("tl::E155".to_owned(), "team right".to_owned())]
+    );
+}

@@ -84,6 +84,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
     let mut requires = Vec::new();
     let mut deferred = Deferred::default();
     let (mut start_with_span, mut start_from_span) = (None, None);
+    let inherited = super::reindex::Inherited::of(s, origins);
     for st in &def.statements {
         let key = match &st.kind {
             StatementKind::Extends(_) => "extends".to_owned(),
@@ -207,6 +208,14 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             s.end_when[k] = EndCondition::When(c);
         }
     }
+    let written = super::reindex::Written {
+        ball: seen.contains_key("ball"),
+        odd_ball: seen.contains_key("on odd episodes ball"),
+        requires: !requires.is_empty(),
+        // A team with errors is incomplete: its indices say nothing.
+        team: [("team left", 0), ("team right", 1)]
+            .map(|(k, i)| seen.get(k).copied().filter(|_| !origins.team_errors[i])),
+    };
     if !requires.is_empty() {
         s.requires.clear();
         origins.requires.clear();
@@ -219,6 +228,7 @@ pub(crate) fn apply(def: &Definition, s: &mut Scenario, origins: &mut Origins, r
             origins.requires.push(Loc { source: r.source.clone(), span: st.span });
         }
     }
+    inherited.check(s, origins, &written, r);
 }
 
 fn side_name(side: syntax::Side) -> &'static str {

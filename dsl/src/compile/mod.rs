@@ -11,6 +11,7 @@ mod curriculum;
 mod events;
 mod params;
 mod pitch;
+mod reindex;
 mod relative;
 mod start;
 

@@ -108,3 +108,20 @@ fn a_binary_scenario_file_is_e150() {
         assert!(!err.contains("tl::E112"), "{err}");
     }
 }
+
+/// Issue 18: `check` runs a script's `reset` hook once, with the scenario's seed, so an error
+/// raised there is reported with its code at check time (exit 1); a reset that runs is fine.
+#[test]
+fn check_runs_the_reset_hook_once() {
+    let dir = drill("reset-throws", "fn reset(s) {\n    throw \"no goal here\";\n}\n\nfn reward(s) {\n    0.0\n}\n");
+    let out = touchline(&dir, &["check", "drill.tl"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    let err = text(&out.stderr);
+    assert!(err.contains("tl::S005") && err.contains("no goal here") && err.contains("reset"), "{err}");
+    assert!(err.contains("checked 1 file: 0 ok, 1 error, 0 warnings"), "{err}");
+    snapshot("check_runs_the_reset_hook_once", &err);
+    let dir = drill("reset-runs", "fn reset(s) {\n    memory.start = s.steps;\n}\n\nfn reward(s) {\n    0.0\n}\n");
+    let out = touchline(&dir, &["check", "drill.tl"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).contains("1 ok, 0 errors"), "{}", text(&out.stdout));
+}

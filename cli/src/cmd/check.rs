@@ -4,6 +4,8 @@ use std::io::{self, Write};
 use std::path::PathBuf;
 
 use clap::Args;
+use touchline_dsl::script::Scripts;
+use touchline_engine::{EngineError, EnvConfig, Scenario};
 
 use crate::CliError;
 
@@ -16,7 +18,8 @@ pub(crate) struct CheckArgs {
 }
 
 /// Compiles each file and prints its diagnostics (errors and warnings) to stderr, then a summary
-/// line. Fails with [`CliError::Check`] (exit 1) when any file has an error.
+/// line; a file that compiles has its scripts compiled, and their `reset` hooks run once. Fails
+/// with [`CliError::Check`] (exit 1) when any file has an error.
 pub(crate) fn run(args: &CheckArgs) -> Result<(), CliError> {
     let (mut errors, mut warnings, mut failed) = (0usize, 0usize, 0usize);
     let stderr = io::stderr();
@@ -31,16 +34,27 @@ pub(crate) fn run(args: &CheckArgs) -> Result<(), CliError> {
             }
             let _ = writeln!(stderr.lock(), "{:?}", miette::Report::new(d.clone()));
         }
-        if !diagnostics.has_errors() {
-            // The scenario compiles: its scripts must too (`tl::S001` … `tl::S004`).
-            let dir = touchline_dsl::script_dir(&file.to_string_lossy());
-            let scripts = touchline_dsl::compile_file(file)
-                .map(|c| touchline_dsl::script::Scripts::compile(&c.scenario, &dir, Default::default()).err());
-            if let Ok(Some(script_errors)) = scripts {
+        if diagnostics.has_errors() {
+            continue;
+        }
+        let Ok(compiled) = touchline_dsl::compile_file(file) else { continue };
+        // The scenario compiles: its scripts must too (`tl::S001` … `tl::S004`, `tl::S008`,
+        // `tl::S010`), and their `reset` hooks must run.
+        let dir = touchline_dsl::script_dir(&file.to_string_lossy());
+        match Scripts::compile(&compiled.scenario, &dir, Default::default()) {
+            Err(script_errors) => {
                 failed += 1;
                 for e in script_errors.errors {
                     errors += 1;
                     let _ = writeln!(stderr.lock(), "{:?}", miette::Report::new(e));
+                }
+            }
+            Ok(scripts) => {
+                if let Some(message) = first_reset(&scripts, compiled.scenario) {
+                    failed += 1;
+                    errors += 1;
+                    // Rendered already, as `touchline run` prints it.
+                    let _ = writeln!(stderr.lock(), "{}\n", message.trim_end());
                 }
             }
         }
@@ -58,4 +72,22 @@ pub(crate) fn run(args: &CheckArgs) -> Result<(), CliError> {
     }
     writeln!(io::stdout().lock(), "{summary}")?;
     Ok(())
+}
+
+/// Plays the scenario's first reset with its scripts attached, as `touchline run` does, with the
+/// scenario's seed (`game_engine_random_seed`) and at most one left agent: the rendered diagnostic
+/// of a `reset` hook that fails (`tl::S005`, `tl::S006`), if one does. What the env refuses for
+/// other reasons depends on the agents asked for, which are `touchline run`'s to check.
+fn first_reset(scripts: &Scripts, scenario: Scenario) -> Option<String> {
+    if scripts.is_empty() {
+        return None;
+    }
+    let first = scenario.curriculum.as_ref().and_then(|c| c.lessons.first()).map_or(&scenario, |l| &l.scenario);
+    let left_agents = first.controllable_every_episode()[0].min(1);
+    let config = EnvConfig { left_agents, right_agents: 0, ..EnvConfig::default() };
+    let seed = scenario.game_engine_random_seed;
+    match touchline_dsl::attach(scripts, scenario, config, seed) {
+        Err(EngineError::Script { message }) => Some(message),
+        _ => None,
+    }
 }

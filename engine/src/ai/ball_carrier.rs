@@ -6,7 +6,6 @@
 use glam::Vec2;
 
 use super::{Analysis, Difficulty, MatchView, Plan};
-use crate::game::kick::shot_target;
 use crate::game::{Kick, KickKind, KickTarget};
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
 use crate::player::{Player, SPRINT_SPEED, nearest_distance};
@@ -43,42 +42,69 @@ fn shot_value(from: Vec2, opponents: &[Player], frame: crate::geometry::TeamFram
 /// by a sine, must exceed 0.1 (within about 12.7 m of it). The lane is the best of three aims, at
 /// the posts and the centre a metre behind the line: each opponent who could get to the ball's
 /// line before it (ball at a third of a pass's pace, he at sprint pace) adds danger, and the odds
-/// are 1 − danger. He shoots when √odds + U(0, 0.5) > 0.5.
+/// are 1 − danger. He shoots when √odds + U(0, 0.5) > 0.5, at the lane with the best odds (the
+/// centre unless a post's are better): `Some(y)` of that lane (team frame, m), else `None`.
 fn takes_on_shot(
     from: Vec2,
     velocity: Vec2,
     opponents: &[Player],
     frame: crate::geometry::TeamFrame,
     rng: &mut MatchRng,
-) -> bool {
+) -> Option<f32> {
     let closeness = 1.0 - (from.distance(Vec2::new(HALF_LENGTH - 7.0, 0.0)) / 16.0).clamp(0.0, 1.0);
     let ideal = libm::sinf((closeness - 0.5) * std::f32::consts::PI) * 0.5 + 0.5;
     if ideal <= 0.1 {
-        return false;
+        return None;
     }
     let origin = from + velocity * 0.12;
-    let odds = [-3.6, 0.0, 3.6]
-        .into_iter()
-        .map(|y| {
-            let target = Vec2::new(HALF_LENGTH + 1.0, y);
-            let line = target - origin;
-            let mut danger = 0.0;
-            for o in opponents.iter().filter(|o| o.active) {
-                let at = frame.vec2(o.position) + frame.vec2(o.velocity) * 0.2;
-                let u = (at - origin).dot(line) / line.length_squared().max(1e-6);
-                if !(0.0..=1.2).contains(&u) {
-                    continue;
-                }
-                let meet = origin + line * u.min(1.0);
-                let his_time = (at.distance(meet) + 1.0) / SPRINT_SPEED;
-                let ball_time = (0.7 + (meet - origin).length() * u * 0.03) / 3.0;
-                danger += (ball_time - his_time + 0.5).clamp(0.0, 1.0);
+    let lane_odds = |y: f32| {
+        let target = Vec2::new(HALF_LENGTH + 1.0, y);
+        let line = target - origin;
+        let mut danger = 0.0;
+        for o in opponents.iter().filter(|o| o.active) {
+            let at = frame.vec2(o.position) + frame.vec2(o.velocity) * 0.2;
+            let u = (at - origin).dot(line) / line.length_squared().max(1e-6);
+            if !(0.0..=1.2).contains(&u) {
+                continue;
             }
-            1.0 - danger.clamp(0.0, 1.0)
-        })
-        .fold(0.0f32, f32::max);
-    odds.sqrt() + 0.5 * rng.unit() > 0.5
+            let meet = origin + line * u.min(1.0);
+            let his_time = (at.distance(meet) + 1.0) / SPRINT_SPEED;
+            let ball_time = (0.7 + (meet - origin).length() * u * 0.03) / 3.0;
+            danger += (ball_time - his_time + 0.5).clamp(0.0, 1.0);
+        }
+        1.0 - danger.clamp(0.0, 1.0)
+    };
+    let (mut odds, mut lane) = (lane_odds(0.0), 0.0);
+    for y in [-SHOT_LANE, SHOT_LANE] {
+        let o = lane_odds(y);
+        if o > odds {
+            (odds, lane) = (o, y);
+        }
+    }
+    (odds.sqrt() + 0.5 * rng.unit() > 0.5).then_some(lane)
 }
+
+/// Where the AI's shot goes (team frame, m), GRF's on-the-ball AI: a metre behind the goal line
+/// at the chosen lane, `lane_y` (the centre, or just inside a post: `SHOT_AIM`), plus up to
+/// 1 − shooting skill metres either way (none in a deterministic match). Aimed at a post, a shot from a weaker shooter often goes
+/// wide, and the goal kicks of a match come from such shots.
+fn shot_aim(lane_y: f32, skill: f32, rng: &mut MatchRng) -> Vec2 {
+    let y = lane_y.signum() * if lane_y == 0.0 { 0.0 } else { SHOT_AIM };
+    let spread = 1.0 - skill.clamp(0.0, 1.0);
+    Vec2::new(HALF_LENGTH + 1.0, y + rng.noise(spread))
+}
+
+/// How hard the AI strikes a shot from `distance` m out, GRF's desired power: U(0.7, 1) × (0.6 +
+/// 0.4 × the distance over 32 m), so a close shot is placed rather than blasted (the mean, 0.85,
+/// in a deterministic match).
+fn shot_power(distance: f32, rng: &mut MatchRng) -> f32 {
+    (0.85 + rng.noise(0.15)) * (0.6 + 0.4 * (distance / 32.0).clamp(0.0, 1.0))
+}
+
+/// The lanes a shooter weighs (m off centre, a metre behind the goal line) and where he aims in a
+/// post's lane (GRF 2.10's on-the-ball AI).
+const SHOT_LANE: f32 = 3.6;
+const SHOT_AIM: f32 = 3.5;
 
 /// The plan for the ball carrier `g`.
 pub(crate) fn plan(
@@ -126,23 +152,22 @@ pub(crate) fn plan(
     }
 
     // Shot.
-    let base = if takes_on_shot(pos_t, frame.vec2(me.velocity), opponents, frame, rng) {
-        shot_value(pos_t, opponents, frame)
-    } else {
-        0.0
-    };
+    let lane = takes_on_shot(pos_t, frame.vec2(me.velocity), opponents, frame, rng);
+    let base = if lane.is_some() { shot_value(pos_t, opponents, frame) } else { 0.0 };
     let shot = if base > 0.0 {
         base * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 } + rng.noise(noise)
     } else {
         f32::NEG_INFINITY
     };
-    let keeper_y = opponents.iter().find(|o| o.is_keeper() && o.active).map(|k| k.position.y);
-    let mut target = shot_target(side.attack_sign(), keeper_y, me.position.y);
-    target.y += rng.noise(difficulty.aim_error);
-    if shot > best_value {
+    if let Some(lane) = lane
+        && shot > best_value
+    {
         best_value = shot;
+        let skill = me.skill(me.attributes.shooting, difficulty.theta);
+        let target = frame.vec2(shot_aim(lane, skill, rng));
+        let power = shot_power(pos_t.distance(goal_t), rng);
         best = Plan {
-            kick: Some(Kick { kind: KickKind::Shot, target: KickTarget::Point(target), height: 0.5, power: 0.6 }),
+            kick: Some(Kick { kind: KickKind::Shot, target: KickTarget::Point(target), height: 0.5, power }),
             ..Plan::go(me.position, 0.0, target - me.position)
         };
     }
@@ -257,21 +282,11 @@ mod tests {
         let mut rng = MatchRng::new(1, 0, true);
         for _ in 0..50 {
             // 27 m out, 20 m from the spot 7 m out: GRF's AI never shoots from there.
-            assert!(!takes_on_shot(
-                Vec2::new(HALF_LENGTH - 27.0, 0.0),
-                Vec2::ZERO,
-                std::slice::from_ref(&keeper),
-                frame,
-                &mut rng
-            ));
+            let far = Vec2::new(HALF_LENGTH - 27.0, 0.0);
+            assert_eq!(takes_on_shot(far, Vec2::ZERO, std::slice::from_ref(&keeper), frame, &mut rng), None);
             // 12 m out in front of goal, only the keeper on his line: always.
-            assert!(takes_on_shot(
-                Vec2::new(HALF_LENGTH - 12.0, 0.0),
-                Vec2::ZERO,
-                std::slice::from_ref(&keeper),
-                frame,
-                &mut rng
-            ));
+            let near = Vec2::new(HALF_LENGTH - 12.0, 0.0);
+            assert!(takes_on_shot(near, Vec2::ZERO, std::slice::from_ref(&keeper), frame, &mut rng).is_some());
         }
         // The same spot with three defenders across the lanes a few metres ahead: seldom.
         let wall: Vec<Player> = (0..3)
@@ -286,9 +301,28 @@ mod tests {
             })
             .collect();
         let shots = (0..50)
-            .filter(|_| takes_on_shot(Vec2::new(HALF_LENGTH - 12.0, 0.0), Vec2::ZERO, &wall, frame, &mut rng))
+            .filter(|_| takes_on_shot(Vec2::new(HALF_LENGTH - 12.0, 0.0), Vec2::ZERO, &wall, frame, &mut rng).is_some())
             .count();
         assert!(shots < 10, "{shots} of 50");
+    }
+
+    #[test]
+    fn a_shot_aims_at_a_post_or_the_centre_and_a_weaker_shooter_spreads_it_wider() {
+        let mut rng = MatchRng::new(3, 0, true);
+        let spread = |skill: f32, rng: &mut MatchRng| {
+            (0..200).map(|_| (shot_aim(SHOT_LANE, skill, rng).y - SHOT_AIM).abs()).fold(0.0f32, f32::max)
+        };
+        assert!(spread(0.9, &mut rng) <= 0.1 + 1e-5);
+        let weak = spread(0.4, &mut rng);
+        assert!((0.5..=0.6 + 1e-5).contains(&weak), "{weak}");
+        // Centre lane: the goal's middle; a post lane: just inside that post, a metre behind.
+        let centre = shot_aim(0.0, 1.0, &mut rng);
+        assert_eq!(centre, Vec2::new(HALF_LENGTH + 1.0, 0.0));
+        assert_eq!(shot_aim(-SHOT_LANE, 1.0, &mut rng).y, -SHOT_AIM);
+        // Power grows with range: placed from close, full from 32 m.
+        let close = (0..50).map(|_| shot_power(8.0, &mut rng)).fold(0.0f32, f32::max);
+        let far = (0..50).map(|_| shot_power(32.0, &mut rng)).fold(1.0f32, f32::min);
+        assert!(close <= 0.7 + 1e-5 && far >= 0.7 - 1e-5, "{close} {far}");
     }
 
     #[test]

@@ -18,21 +18,13 @@ pub struct Difficulty {
     /// and worse only through the players' weaker stats. Zero in deterministic scenarios (the
     /// match RNG returns no noise).
     pub decision_noise: f32,
-    /// How far (m) an AI shot's aim may stray sideways from the point chosen: GRF's ±(1 − shot
-    /// stat) m, with a typical shooter's stat of 0.85 scaled by 0.3 + 0.7·θ.
-    pub aim_error: f32,
 }
 
 impl Difficulty {
     /// Parameters for θ (clamped into [0, 1]).
     pub fn new(theta: f32) -> Difficulty {
         let theta = theta.clamp(0.0, 1.0);
-        Difficulty {
-            theta,
-            reaction_ticks: 5.0 + 10.0 * (1.0 - theta),
-            decision_noise: DECISION_NOISE,
-            aim_error: 1.0 - 0.85 * (0.3 + 0.7 * theta),
-        }
+        Difficulty { theta, reaction_ticks: 5.0 + 10.0 * (1.0 - theta), decision_noise: DECISION_NOISE }
     }
 }
 
@@ -45,7 +37,6 @@ mod tests {
         let easy = Difficulty::new(0.05);
         let hard = Difficulty::new(0.95);
         assert!(hard.reaction_ticks < easy.reaction_ticks);
-        assert!(hard.aim_error < easy.aim_error);
         assert_eq!(hard.decision_noise, easy.decision_noise);
         assert_eq!(Difficulty::new(1.0).reaction_ticks, 5.0);
         assert!(Difficulty::new(0.61).reaction_ticks < Difficulty::new(0.6).reaction_ticks);

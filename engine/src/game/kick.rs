@@ -164,25 +164,6 @@ pub(crate) fn aimed_shot_target(shooter: &Player, direction: Vec2) -> Vec2 {
     Vec2::new(goal.x, sign * side * GOAL_HALF_WIDTH * 0.9)
 }
 
-/// The shot's aim point: the goal line of the team `attack_sign` attacks, towards the corner
-/// farther from the keeper.
-pub(crate) fn shot_target(attack_sign: f32, keeper_y: Option<f32>, shooter_y: f32) -> Vec2 {
-    let inside = GOAL_HALF_WIDTH - 0.9;
-    let y = match keeper_y {
-        Some(k) if k > 0.3 => -inside,
-        Some(k) if k < -0.3 => inside,
-        // Keeper central: the far post from the shooter.
-        _ => {
-            if shooter_y >= 0.0 {
-                -inside
-            } else {
-                inside
-            }
-        }
-    };
-    Vec2::new(attack_sign * HALF_LENGTH, y)
-}
-
 /// The point an agent's pass of `kind` aims at, pressed with `power` (GRF's input power, in
 /// [0, 1]) in `direction` (unit, global frame), GRF's receiver choice (GRF 2.10's pass targeting):
 /// the manual target lies `power`·60 m (1–100 m) along the direction; every active team-mate, the
@@ -356,12 +337,5 @@ mod tests {
             let aimed = aimed_shot_target(&shooter, Vec2::new(sign, 1.0).normalize());
             assert!(aimed.y > 1.0 && aimed.y <= GOAL_HALF_WIDTH * 0.9 + 1e-4, "{side:?}: {aimed}");
         }
-    }
-
-    #[test]
-    fn shots_aim_away_from_the_keeper() {
-        assert!(shot_target(1.0, Some(1.0), 0.0).y < 0.0);
-        assert!(shot_target(1.0, Some(-1.0), 0.0).y > 0.0);
-        assert_eq!(shot_target(-1.0, None, 5.0).x, -HALF_LENGTH);
     }
 }

@@ -239,7 +239,7 @@ impl CliError {
     /// The error of a failed step: a script's diagnostic, or an engine bug.
     pub(crate) fn step(info: &touchline_engine::StepInfo, source: EngineError) -> CliError {
         match source {
-            EngineError::Script { message } => CliError::Script { episode: info.episode, message },
+            EngineError::Script { message, .. } => CliError::Script { episode: info.episode, message },
             source => CliError::Engine { episode: info.episode, steps: info.steps, source },
         }
     }

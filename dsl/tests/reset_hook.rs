@@ -37,13 +37,13 @@ fn reset_returns_the_hook_error_and_the_env_moves_on() {
         play_out(&mut env);
         match env.reset() {
             Ok(()) => {}
-            Err(EngineError::Script { message }) => {
+            Err(EngineError::Script { message, .. }) => {
                 assert!(message.contains("tl::S005") && message.contains("reset"), "{message}");
                 assert!(message.contains("no episode 3"), "{message}");
                 failures.push(env.info().episode);
                 // The failed episode cannot be played, and says why, every time.
                 for _ in 0..3 {
-                    let Err(EngineError::Script { message: again }) = env.step(&[Action::Idle]) else {
+                    let Err(EngineError::Script { message: again, .. }) = env.step(&[Action::Idle]) else {
                         panic!("a step of the failed episode must fail with the reset's error")
                     };
                     assert_eq!(again, message);

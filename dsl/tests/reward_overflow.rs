@@ -67,7 +67,7 @@ fn a_script_term_that_overflows_is_an_error_naming_it() {
     let options = ScriptOptions { on_error: ErrorPolicy::Raise, ..ScriptOptions::default() };
     let mut env = build_env_with(scenario.clone(), &dir, EnvConfig::default(), 0, options).unwrap();
     match env.step(&[Action::Idle]) {
-        Err(EngineError::Script { message }) => {
+        Err(EngineError::Script { message, .. }) => {
             assert!(message.contains("tl::S009") && message.contains("big.rhai"), "{message}");
         }
         other => panic!("paid {:?}: {other:?}", env.rewards()),
@@ -91,6 +91,8 @@ fn a_sum_that_overflows_names_the_term_that_made_it() {
         RewardTerm { reward: RewardKind::Script { path: "b.rhai".into() }, weight: 1.0 },
     ];
     let mut env = build_env_with(scenario, &dir, EnvConfig::default(), 0, ScriptOptions::default()).unwrap();
-    let Err(EngineError::Script { message }) = env.step(&[Action::Idle]) else { panic!("paid {:?}", env.rewards()) };
+    let Err(EngineError::Script { message, .. }) = env.step(&[Action::Idle]) else {
+        panic!("paid {:?}", env.rewards())
+    };
     assert!(message.contains("tl::S009") && message.contains("b.rhai"), "{message}");
 }

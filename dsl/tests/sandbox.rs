@@ -66,7 +66,7 @@ fn clocks_and_sleep_do_not_exist_at_run_time() {
     {
         let mut env = env_with(text).unwrap();
         let start = Instant::now();
-        let Err(EngineError::Script { message }) = env.step(&[Action::Idle]) else { panic!("{text} must fail") };
+        let Err(EngineError::Script { message, .. }) = env.step(&[Action::Idle]) else { panic!("{text} must fail") };
         assert!(start.elapsed() < Duration::from_secs(1), "{text}: {:?}", start.elapsed());
         assert!(message.contains("tl::S005") && message.contains("not found"), "{text}: {message}");
     }
@@ -144,7 +144,7 @@ fn one_call(text: &str) -> (Duration, Result<(), String>) {
     let took = start.elapsed();
     match result {
         Ok(_) => (took, Ok(())),
-        Err(EngineError::Script { message }) => (took, Err(message)),
+        Err(EngineError::Script { message, .. }) => (took, Err(message)),
         Err(e) => panic!("{text}: {e}"),
     }
 }

@@ -76,13 +76,13 @@ fn fail(name: &str, source: &str) -> Failure {
             let code = e.code().map(|c| c.to_string()).unwrap_or_default();
             Failure { code, at: None, labelled: Some(labelled.unwrap_or_default()), rendered: render_plain(&e) }
         }
-        Err(BuildError::Engine(EngineError::Script { message })) => from_text(message),
+        Err(BuildError::Engine(EngineError::Script { message, .. })) => from_text(message),
         Err(other) => panic!("{name}: {other:?}"),
         Ok(mut env) => {
             for _ in 0..50 {
                 match env.step(&[Action::Right]) {
                     Ok(_) => {}
-                    Err(EngineError::Script { message }) => return from_text(message),
+                    Err(EngineError::Script { message, .. }) => return from_text(message),
                     Err(other) => panic!("{name}: {other:?}"),
                 }
             }

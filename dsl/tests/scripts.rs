@@ -192,7 +192,7 @@ fn same_seed_same_rewards() {
 #[test]
 fn an_endless_loop_is_stopped_by_the_operation_limit() {
     let mut env = env_with("fn reward(s) { let x = 0; loop { x += 1; } }", ErrorPolicy::Raise).unwrap();
-    let Err(EngineError::Script { message }) = env.step(&[Action::Idle]) else { panic!("the loop must fail") };
+    let Err(EngineError::Script { message, .. }) = env.step(&[Action::Idle]) else { panic!("the loop must fail") };
     assert!(message.contains("tl::S005") && message.contains("operation limit"), "{message}");
     assert!(message.contains("fn reward"), "points at the hook: {message}");
     assert!(env.is_done());
@@ -203,7 +203,7 @@ fn huge_strings_and_arrays_are_refused() {
     for text in [r#"fn reward(s) { let x = "ab"; loop { x += x; } }"#, "fn reward(s) { let a = [1]; loop { a += a; } }"]
     {
         let mut env = env_with(text, ErrorPolicy::Raise).unwrap();
-        let Err(EngineError::Script { message }) = env.step(&[Action::Idle]) else { panic!("{text} must fail") };
+        let Err(EngineError::Script { message, .. }) = env.step(&[Action::Idle]) else { panic!("{text} must fail") };
         assert!(message.contains("tl::S005") && message.contains("is over its"), "{text}: {message}");
     }
 }
@@ -219,7 +219,7 @@ fn no_file_access_no_modules_no_eval_no_clock() {
     // (A clock or `sleep` is refused when the script compiles: tests/sandbox.rs.)
     for text in ["fn reward(s) { open(\"/etc/passwd\") }", "fn reward(s) { rand() }"] {
         let mut env = env_with(text, ErrorPolicy::Raise).unwrap();
-        let Err(EngineError::Script { message }) = env.step(&[Action::Idle]) else { panic!("{text} must fail") };
+        let Err(EngineError::Script { message, .. }) = env.step(&[Action::Idle]) else { panic!("{text} must fail") };
         assert!(message.contains("Function not found"), "{text}: {message}");
     }
 }
@@ -267,7 +267,7 @@ fn wrong_return_types_fail_the_step() {
         ("fn reward(s) { 1.0 / 0.0 }", "tl::S006"),
     ] {
         let mut env = env_with(text, ErrorPolicy::Raise).unwrap();
-        let Err(EngineError::Script { message }) = env.step(&[Action::Idle]) else { panic!("{text} must fail") };
+        let Err(EngineError::Script { message, .. }) = env.step(&[Action::Idle]) else { panic!("{text} must fail") };
         assert!(message.contains(expected), "{text}: {message}");
     }
 }
@@ -288,7 +288,7 @@ fn warn_policy_pays_zero_and_counts() {
 fn memory_is_not_visible_in_helpers_and_the_message_says_so() {
     let text = "fn helper() { memory.x = 1; 0 } fn reward(s) { helper() }";
     let mut env = env_with(text, ErrorPolicy::Raise).unwrap();
-    let Err(EngineError::Script { message }) = env.step(&[Action::Idle]) else { panic!() };
+    let Err(EngineError::Script { message, .. }) = env.step(&[Action::Idle]) else { panic!() };
     assert!(message.contains("helper"), "{message}");
 }
 

@@ -56,6 +56,9 @@ pub enum EngineError {
     Script {
         /// The rendered diagnostic.
         message: String,
+        /// Its stable code (`tl::S005`, …), for callers that branch on it (Python's
+        /// `ScenarioError.code`).
+        code: String,
     },
     /// `step` after the episode ended; call `reset` first.
     #[error("the episode has ended; call reset() before step()")]

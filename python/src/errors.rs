@@ -54,16 +54,30 @@ pub(crate) fn script_errors(py: Python<'_>, err: &touchline_dsl::script::ScriptE
 }
 
 /// Engine errors: bad input is a `ValueError`, stepping a finished episode a `RuntimeError`, an
-/// invalid scenario a `ScenarioError`.
+/// invalid scenario or a failing script a `ScenarioError` with its `code`, as a scenario that does
+/// not load: the script's (`tl::S005` from a `reset` hook, …), or `tl::S000` for a scenario the
+/// engine refuses.
 pub(crate) fn engine_error(err: EngineError) -> PyErr {
     match err {
         EngineError::EpisodeOver => PyRuntimeError::new_err(err.to_string()),
-        EngineError::InvalidScenario { .. } | EngineError::Script { .. } => ScenarioError::new_err(err.to_string()),
+        EngineError::Script { message, code } => with_code(message, code),
+        EngineError::InvalidScenario { .. } => with_code(err.to_string(), "tl::S000".to_owned()),
         EngineError::InvalidSnapshot { .. } | EngineError::SnapshotScenario { .. } => {
             PyValueError::new_err(err.to_string())
         }
         _ => PyValueError::new_err(err.to_string()),
     }
+}
+
+/// `ScenarioError(message)` with its `code` attribute.
+fn with_code(message: String, code: String) -> PyErr {
+    Python::attach(|py| {
+        let exc = ScenarioError::new_err(message);
+        match exc.value(py).setattr("code", code) {
+            Ok(()) => exc,
+            Err(e) => e,
+        }
+    })
 }
 
 /// Runs `f`, turning a Rust panic into a Python `RuntimeError` instead of unwinding into Python.

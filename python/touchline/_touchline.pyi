@@ -31,6 +31,7 @@ class ScenarioError(TouchlineError):
     """A scenario could not be loaded; the message is the rendered diagnostic."""
 
     code: str
+    """The stable code: ``tl::E105``, ``tl::S002``, ``tl::S005`` for a script hook that failed, ..."""
 
 class ReplayError(TouchlineError):
     """A replay file that cannot be read (damaged, another format version) or that does not re-simulate."""

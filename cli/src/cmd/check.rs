@@ -87,7 +87,7 @@ fn first_reset(scripts: &Scripts, scenario: Scenario) -> Option<String> {
     let config = EnvConfig { left_agents, right_agents: 0, ..EnvConfig::default() };
     let seed = scenario.game_engine_random_seed;
     match touchline_dsl::attach(scripts, scenario, config, seed) {
-        Err(EngineError::Script { message }) => Some(message),
+        Err(EngineError::Script { message, .. }) => Some(message),
         _ => None,
     }
 }

@@ -264,7 +264,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), CliError> {
         scripts.sources().map(|(path, text)| (path.to_owned(), text.to_owned())).collect();
     let mut env = touchline_dsl::attach(&scripts, scenario, config, args.seed).map_err(|e| match e {
         // A script failing at the first reset is the script's error, not the configuration's.
-        EngineError::Script { message } => CliError::Script { episode: 0, message },
+        EngineError::Script { message, .. } => CliError::Script { episode: 0, message },
         source => CliError::Config {
             scenario: args.scenario.clone(),
             help: format!(

@@ -128,7 +128,7 @@ pub(crate) fn run(args: &WatchArgs) -> Result<(), CliError> {
                         break None;
                     }
                 }
-                Err(EngineError::Script { message }) => break Some(message),
+                Err(EngineError::Script { message, .. }) => break Some(message),
                 Err(source) => return Err(CliError::step(env.info(), source)),
             }
         };

@@ -175,7 +175,10 @@ impl ScriptHooks {
     fn fail(&mut self, error: &ScriptError, errors: &mut u32) -> Result<(), EngineError> {
         let message = crate::render_plain(error);
         match self.set.options.on_error {
-            ErrorPolicy::Raise => Err(EngineError::Script { message }),
+            ErrorPolicy::Raise => {
+                let code = miette::Diagnostic::code(error).map_or_else(|| "tl::S005".to_owned(), |c| c.to_string());
+                Err(EngineError::Script { message, code })
+            }
             ErrorPolicy::Warn => {
                 *errors += 1;
                 self.log.push(message);
@@ -396,7 +399,10 @@ impl Hooks for ScriptHooks {
             self.log.clear();
         }
         let Some(i) = self.set.scripts.iter().position(|s| s.role == Role::Behaviour && s.path == path) else {
-            return Err(EngineError::Script { message: format!("no behaviour script \"{path}\" was compiled") });
+            return Err(EngineError::Script {
+                message: format!("no behaviour script \"{path}\" was compiled"),
+                code: "tl::S000".to_owned(),
+            });
         };
         let result = self.act(i, side.index(), player, view.steps);
         self.drain_prints();

@@ -85,6 +85,24 @@ fn compile_writes_json_that_loads_back_and_keeps_distributions() {
     assert_eq!(std::fs::read_to_string(&json).unwrap(), written);
 }
 
+/// Issue 18: `compile --tl` writes an odd-episode ball placed from a player back as `.tl`, and that
+/// text compiles to the same scenario.
+#[test]
+fn compile_tl_writes_a_relative_odd_ball_back() {
+    let dir = scratch("compile_tl_odd_ball");
+    let file = dir.join("odd.tl");
+    let tl = "scenario odd {\n  extends academy\n  ball at (0.1, 0)\n  on odd episodes ball at near(left.CF + (1 m, 0), 2 m)\n  team left { GK at (-1, 0) CF at (uniform(0.2, 0.6), 0) }\n  team right { GK at (-1, 0) }\n}\n";
+    std::fs::write(&file, tl).unwrap();
+    let back = dir.join("back.tl");
+    let out = touchline(&["compile", file.to_str().unwrap(), "--tl", "-o", back.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let written = std::fs::read_to_string(&back).unwrap();
+    assert!(written.contains("on odd episodes ball at near(left[1] + (1 m, 0 m), 2 m)"), "{written}");
+    let again = touchline_dsl::load(back.to_str().unwrap()).unwrap();
+    assert_eq!(again, touchline_dsl::load(file.to_str().unwrap()).unwrap());
+    assert!(again.odd_episode_ball_random.is_some());
+}
+
 #[test]
 fn fmt_rewrites_then_is_a_fixed_point() {
     let dir = scratch("fmt");

@@ -85,11 +85,11 @@ fn takes_on_shot(
 }
 
 /// Where the AI's shot goes (team frame, m), GRF's on-the-ball AI: a metre behind the goal line
-/// at the chosen lane, `lane_y` (the centre, or just inside a post: `SHOT_AIM`), plus up to
-/// 1 − shooting skill metres either way (none in a deterministic match). Aimed at a post, a shot from a weaker shooter often goes
-/// wide, and the goal kicks of a match come from such shots.
+/// at the chosen lane, `lane_y` (the centre, or just inside a post: [`SHOT_AIM`]), plus up to
+/// 1 − shooting skill metres either way (none in a deterministic match). Aimed at a post, a shot
+/// from a weaker shooter often goes wide, and the goal kicks of a match come from such shots.
 fn shot_aim(lane_y: f32, skill: f32, rng: &mut MatchRng) -> Vec2 {
-    let y = lane_y.signum() * if lane_y == 0.0 { 0.0 } else { SHOT_AIM };
+    let y = if lane_y == 0.0 { 0.0 } else { SHOT_AIM.copysign(lane_y) };
     let spread = 1.0 - skill.clamp(0.0, 1.0);
     Vec2::new(HALF_LENGTH + 1.0, y + rng.noise(spread))
 }

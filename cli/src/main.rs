@@ -12,6 +12,7 @@
 //! touchline run 11_vs_11_easy_stochastic --record replays/
 //! touchline replay replays/11_vs_11_easy_stochastic_seed0_ep0.tlreplay -o match.gif
 //! touchline view replays/
+//! touchline play academy_empty_goal_close --port 8000
 //! ```
 //!
 //! Exit codes: 0 on success; 1 when `check` finds an error, `fmt --check` finds an unformatted
@@ -56,6 +57,9 @@ enum Command {
     /// Watch replays in the browser: serves a viewer page on localhost, or writes it as one
     /// self-contained HTML file.
     View(cmd::view::ViewArgs),
+    /// Play a scenario yourself in the browser (keyboard or gamepad) against the built-in AI; each
+    /// match is recorded as a replay.
+    Play(cmd::play::PlayArgs),
     /// Play a scenario over and over, recompiling it and its scripts whenever a file changes.
     Watch(cmd::watch::WatchArgs),
 }
@@ -178,8 +182,8 @@ pub(crate) enum CliError {
         reason: String,
     },
 
-    /// The viewer could not serve.
-    #[error("cannot serve the viewer: {reason}")]
+    /// The viewer or the play page could not serve.
+    #[error("cannot serve the page: {reason}")]
     #[diagnostic(code(tl::cli::view))]
     Serve {
         /// Why.
@@ -271,6 +275,7 @@ fn main() -> ExitCode {
         Command::Replay(args) => cmd::replay::run(&args),
         Command::View(args) => cmd::view::run(&args),
         Command::Watch(args) => cmd::watch::run(&args),
+        Command::Play(args) => cmd::play::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

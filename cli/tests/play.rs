@@ -53,8 +53,13 @@ struct Server {
 
 impl Server {
     fn start(scenario: &str, record: &Path) -> Server {
+        Server::start_with(scenario, record, &[])
+    }
+
+    fn start_with(scenario: &str, record: &Path, extra: &[&str]) -> Server {
         let mut child = Command::new(env!("CARGO_BIN_EXE_touchline"))
             .args(["play", scenario, "--port", "0", "--record", record.to_str().expect("utf-8")])
+            .args(extra)
             .stdout(Stdio::piped())
             .spawn()
             .expect("start touchline play");
@@ -325,6 +330,50 @@ fn a_scripted_key_sequence_scores_in_academy_empty_goal_close_and_is_recorded() 
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// Issue 19: two people, one per team, on one keyboard (W A S D and the arrows) and in two tabs
+/// (`?player=1` gives the second the whole key map).
+#[test]
+fn two_people_play_on_one_keyboard_and_in_two_tabs() {
+    let Some(browser) = browser_or_skip() else { return };
+    let dir = scratch("two");
+    let server = Server::start_with("academy_3_vs_1_with_keeper", &dir.join("replays"), &["--players", "2"]);
+    let mut page = Browser::launch(&browser, &dir.join("profile"));
+    page.open(&server.url);
+    let start = page.wait_for("the kick-off", |s| s["phase"] == "kick_off");
+    let (left, right) = (controlled(&start), start["controlled"][1].as_u64().expect("two people") as usize);
+    let keymap = page.eval("document.getElementById('keymap').textContent").as_str().unwrap_or("").to_string();
+    assert!(keymap.contains("left (red)") && keymap.contains("right (blue)"), "{keymap}");
+
+    // W for the left person, ↓ for the right one, together (for ten steps: the left player, a
+    // metre from the loose ball, first steps towards it).
+    const W: (&str, &str, u32) = ("KeyW", "w", 87);
+    const DOWN: (&str, &str, u32) = ("ArrowDown", "ArrowDown", 40);
+    page.key(W, true);
+    page.key(DOWN, true);
+    let moved = page.wait_for("ten steps", |s| s["step"].as_u64().unwrap_or(0) >= 10);
+    page.key(W, false);
+    page.key(DOWN, false);
+    let (l0, r0) = (position(&start, left), position(&start, right));
+    let (l1, r1) = (position(&moved, left), position(&moved, right));
+    assert!(l1.1 < l0.1 - 0.5, "the left player ran up: {l0:?} -> {l1:?}");
+    assert!(r1.1 > r0.1 + 0.5, "the right player ran down: {r0:?} -> {r1:?}");
+
+    // A second tab for the right person: S (down in the whole key map) moves the right player.
+    let mut tab = Browser::launch(&browser, &dir.join("profile-2"));
+    tab.open(&format!("{}?player=1", server.url));
+    let before = tab.wait_for("the state", |s| s["step"].as_u64().unwrap_or(0) >= 5);
+    let right = before["controlled"][1].as_u64().expect("two people") as usize;
+    const S: (&str, &str, u32) = ("KeyS", "s", 83);
+    tab.key(S, true);
+    let step = before["step"].as_u64().unwrap_or(0);
+    let after = tab.wait_for("ten more steps", |s| s["step"].as_u64().unwrap_or(0) >= step + 10);
+    tab.key(S, false);
+    let (b, a) = (position(&before, right), position(&after, right));
+    assert!(a.1 > b.1 + 0.5, "the right player ran down: {b:?} -> {a:?}");
+    drop((page, tab, server));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn bad_arguments_fail_with_a_clear_error_and_no_panic() {
     let dir = scratch("bad");
@@ -355,6 +404,8 @@ fn bad_arguments_fail_with_a_clear_error_and_no_panic() {
     assert_eq!(code, Some(2));
     assert!(err.contains("outside [0, 1]"), "{err}");
     let (code, err) = touchline(&["play", "academy_empty_goal_close", "--side", "middle"]);
+    assert_eq!(code, Some(2), "{err}");
+    let (code, err) = touchline(&["play", "academy_empty_goal_close", "--players", "3"]);
     assert_eq!(code, Some(2), "{err}");
     let broken = dir.join("broken.tl");
     std::fs::write(&broken, "scenario broken { ball at (").expect("write");

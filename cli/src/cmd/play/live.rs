@@ -35,6 +35,9 @@ pub(crate) enum Phase {
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct InputMessage {
+    /// Which person (controller index: left team first); 0 when left out.
+    #[serde(default)]
+    player: usize,
     #[serde(default)]
     held: Vec<String>,
     #[serde(default)]
@@ -68,6 +71,9 @@ pub(crate) struct LiveState<'a> {
     mode: &'static str,
     /// The action the person's controller sent in the last step (GRF's name).
     last_action: &'static str,
+    /// Every person at the match (one, or one per team): side, AI hand-over, last action, their
+    /// team's passes and shots. The fields above are the first person's.
+    controllers: Vec<ControllerState>,
     /// Passes and shots of the person's team this episode.
     passes: u32,
     shots: u32,
@@ -77,10 +83,22 @@ pub(crate) struct LiveState<'a> {
     error: Option<&'a str>,
 }
 
+/// One person's part of the state.
+#[derive(Debug, Serialize)]
+pub(crate) struct ControllerState {
+    side: &'static str,
+    builtin_ai: bool,
+    last_action: &'static str,
+    /// Passes and shots of this person's team this episode.
+    passes: u32,
+    shots: u32,
+}
+
 /// The match being played; see the module documentation.
 pub(crate) struct LiveMatch {
     env: Env,
-    controller: HumanController,
+    /// One per person, in the env's controller order (left team first).
+    controllers: Vec<HumanController>,
     recorder: Recorder,
     scripts: Vec<(String, String)>,
     record_dir: PathBuf,
@@ -89,7 +107,7 @@ pub(crate) struct LiveMatch {
     version: u64,
     roster: Vec<[u8; 3]>,
     frame: Frame,
-    last_action: touchline_engine::Action,
+    last_actions: Vec<touchline_engine::Action>,
     events: VecDeque<String>,
     saved: Option<PathBuf>,
     error: Option<String>,
@@ -99,9 +117,10 @@ impl LiveMatch {
     /// A match of `env` (just reset), whose episodes are saved into `record_dir`.
     pub(crate) fn new(env: Env, scripts: Vec<(String, String)>, record_dir: PathBuf, name: String) -> LiveMatch {
         let recorder = Recorder::start(&env).with_scripts(scripts.iter().cloned());
+        let people = env.num_controllers();
         let mut live = LiveMatch {
             env,
-            controller: HumanController::default(),
+            controllers: vec![HumanController::default(); people],
             recorder,
             scripts,
             record_dir,
@@ -110,7 +129,7 @@ impl LiveMatch {
             version: 1,
             roster: Vec::new(),
             frame: Frame::default(),
-            last_action: touchline_engine::Action::Idle,
+            last_actions: vec![touchline_engine::Action::Idle; people],
             events: VecDeque::new(),
             saved: None,
             error: None,
@@ -163,6 +182,10 @@ impl LiveMatch {
             }
             Ok(out)
         };
+        let people = self.controllers.len();
+        if message.player >= people {
+            return Err(format!("no player {} in this match: it has {people} (0 to {})", message.player, people - 1));
+        }
         let held = buttons(&message.held, false)?;
         let pressed = buttons(&message.pressed, true)?;
         let command = |c: &str| message.pressed.iter().any(|p| p == c);
@@ -177,13 +200,13 @@ impl LiveMatch {
             };
         }
         if command("builtin_ai") {
-            self.controller.toggle_builtin();
+            self.controllers[message.player].toggle_builtin();
         }
         // Any button kicks off.
         if self.phase == Phase::KickOff && (!held.is_empty() || !pressed.is_empty()) {
             self.phase = Phase::Playing;
         }
-        self.controller.set_buttons(&held, &pressed);
+        self.controllers[message.player].set_buttons(&held, &pressed);
         self.version += 1;
         Ok(())
     }
@@ -193,8 +216,9 @@ impl LiveMatch {
         if self.phase != Phase::Playing {
             return;
         }
-        let rotated = self.side() == Side::Right;
-        let actions = [self.controller.next_action(rotated)];
+        let sides: Vec<Side> = self.env.controller_sides().collect();
+        let actions: Vec<_> =
+            self.controllers.iter_mut().zip(sides).map(|(c, side)| c.next_action(side == Side::Right)).collect();
         let outcome = match self.env.step(&actions) {
             Ok(outcome) => outcome,
             Err(e) => {
@@ -208,7 +232,7 @@ impl LiveMatch {
             }
         };
         self.recorder.record(&self.env, &actions);
-        self.last_action = actions[0];
+        self.last_actions.clone_from(&actions);
         self.note_events();
         self.capture();
         if outcome.terminated || outcome.truncated {
@@ -268,7 +292,7 @@ impl LiveMatch {
             return;
         }
         self.recorder = Recorder::start(&self.env).with_scripts(self.scripts.iter().cloned());
-        self.controller.new_episode();
+        self.controllers.iter_mut().for_each(HumanController::new_episode);
         self.events.clear();
         self.error = None;
         self.phase = Phase::Playing;
@@ -288,7 +312,7 @@ impl LiveMatch {
             description: &self.env.scenario().description,
             phase: self.phase,
             side: side.name(),
-            builtin_ai: self.controller.builtin(),
+            builtin_ai: self.controllers.first().is_some_and(HumanController::builtin),
             episode: info.episode,
             step: info.steps,
             steps_left: info.steps_left,
@@ -299,7 +323,23 @@ impl LiveMatch {
             controlled: f.controlled.clone(),
             score: f.score,
             mode: info.game_mode.name(),
-            last_action: self.last_action.name(),
+            last_action: self.last_actions.first().map_or("idle", |a| a.name()),
+            controllers: self
+                .env
+                .controller_sides()
+                .zip(&self.controllers)
+                .zip(&self.last_actions)
+                .map(|((side, c), a)| {
+                    let team = &self.env.game().stats().teams[side as usize];
+                    ControllerState {
+                        side: side.name(),
+                        builtin_ai: c.builtin(),
+                        last_action: a.name(),
+                        passes: team.passes,
+                        shots: team.shots,
+                    }
+                })
+                .collect(),
             passes: stats.passes,
             shots: stats.shots,
             events: &self.events,
@@ -329,13 +369,13 @@ mod tests {
     use super::*;
 
     fn live(name: &str, dir: &Path) -> LiveMatch {
-        live_on(name, dir, Side::Left)
+        live_with(name, dir, 1, 0)
     }
 
-    fn live_on(name: &str, dir: &Path, side: Side) -> LiveMatch {
+    /// A match with `left_agents` and `right_agents` people on each side.
+    fn live_with(name: &str, dir: &Path, left_agents: usize, right_agents: usize) -> LiveMatch {
         let path = format!("{}/../stdlib-scenarios/{name}.json", env!("CARGO_MANIFEST_DIR"));
         let scenario: Scenario = serde_json::from_str(&std::fs::read_to_string(path).expect("read")).expect("json");
-        let (left_agents, right_agents) = if side == Side::Left { (1, 0) } else { (0, 1) };
         let config =
             EnvConfig { left_agents, right_agents, action_set: touchline_engine::ActionSet::V2, checkpoints: false };
         let env = Env::with_config(scenario, config, 0).expect("env");
@@ -344,6 +384,7 @@ mod tests {
 
     fn send(live: &mut LiveMatch, held: &[&str], pressed: &[&str]) {
         let message = InputMessage {
+            player: 0,
             held: held.iter().map(|s| s.to_string()).collect(),
             pressed: pressed.iter().map(|s| s.to_string()).collect(),
         };
@@ -379,7 +420,7 @@ mod tests {
     #[test]
     fn the_right_team_runs_where_the_arrow_points_on_screen() {
         let dir = tempfile::tempdir().expect("tempdir");
-        let mut live = live_on("academy_3_vs_1_with_keeper", dir.path(), Side::Right);
+        let mut live = live_with("academy_3_vs_1_with_keeper", dir.path(), 0, 1);
         let player = usize::from(live.state().controlled[0]);
         let before = live.state().players[player];
         send(&mut live, &["up"], &[]);
@@ -387,6 +428,26 @@ mod tests {
         let after = live.state().players[player];
         assert_eq!(live.state().side, "right");
         assert!(before[1] - after[1] > 1.0 && (after[0] - before[0]).abs() < 1.0, "{before:?} -> {after:?}");
+    }
+
+    /// Two people, one per team: each message moves its sender's player only.
+    #[test]
+    fn two_people_each_move_their_own_player() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let mut live = live_with("academy_3_vs_1_with_keeper", dir.path(), 1, 1);
+        let state = live.state();
+        let (left, right) = (usize::from(state.controlled[0]), usize::from(state.controlled[1]));
+        let before = (state.players[left], state.players[right]);
+        let message = InputMessage { player: 1, held: vec!["down".into()], pressed: Vec::new() };
+        live.input(&message).expect("input");
+        (0..8).for_each(|_| live.tick());
+        let state = live.state();
+        assert_eq!(state.controllers.len(), 2);
+        assert_eq!((state.controllers[0].side, state.controllers[1].side), ("left", "right"));
+        assert!(state.players[right][1] - before.1[1] > 1.0, "the right player ran down the screen");
+        assert!((state.players[left][1] - before.0[1]).abs() < 0.5, "the left player stood");
+        let message = InputMessage { player: 2, held: Vec::new(), pressed: Vec::new() };
+        assert!(live.input(&message).unwrap_err().contains("no player 2"));
     }
 
     #[test]
@@ -402,7 +463,7 @@ mod tests {
         assert_eq!((live.state().step, live.state().phase), (1, Phase::Paused));
         send(&mut live, &[], &["restart"]);
         assert_eq!((live.state().step, live.state().episode, live.state().phase), (0, 1, Phase::Playing));
-        let bad = InputMessage { held: vec!["jump".into()], pressed: Vec::new() };
+        let bad = InputMessage { player: 0, held: vec!["jump".into()], pressed: Vec::new() };
         assert!(live.input(&bad).unwrap_err().contains("unknown button `jump`"));
     }
 }

@@ -11,8 +11,9 @@
 //! - `POST /input`: the buttons held and pressed (see docs/play-protocol.md).
 //!
 //! The person controls one player of `--side` (the env's usual active player, who switches to
-//! whoever is nearest the ball), against the built-in AI at the scenario's θ or `--theta`. Every
-//! finished episode is written as a `.tlreplay` into `--record`.
+//! whoever is nearest the ball), against the built-in AI at the scenario's θ or `--theta`; with
+//! `--players 2` two people play, one per team, on one keyboard or in two tabs. Every finished
+//! episode is written as a `.tlreplay` into `--record`.
 
 mod controller;
 mod live;
@@ -53,7 +54,13 @@ pub(crate) struct PlayArgs {
     #[arg(long, value_enum, default_value_t = PlaySide::Left)]
     side: PlaySide,
 
-    /// Difficulty θ in [0, 1] of the built-in AI on the other team (default: the scenario's).
+    /// People at the match: 1, or 2 (one per team: the left team's on the page's left-hand keys
+    /// or at `/?player=0`, the right team's on the right-hand keys or at `/?player=1`).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=2), conflicts_with = "side")]
+    players: u8,
+
+    /// Difficulty θ in [0, 1] of the built-in AI on the other team, or with `--players 2` of
+    /// both teams' AI players (default: the scenario's).
     #[arg(long, value_name = "T", value_parser = theta)]
     theta: Option<f32>,
 
@@ -81,11 +88,16 @@ fn theta(text: &str) -> Result<f32, String> {
     if (0.0..=1.0).contains(&t) { Ok(t) } else { Err(format!("{t} is outside [0, 1]")) }
 }
 
-/// Sets the difficulty of the team the person does not play, in the scenario and its lessons.
-fn set_opponent_theta(scenario: &mut Scenario, side: PlaySide, t: f32) {
-    let set = |s: &mut Scenario| match side {
-        PlaySide::Left => s.right_team_difficulty = t,
-        PlaySide::Right => s.left_team_difficulty = t,
+/// Sets the difficulty of the AI teams (the one without a person), in the scenario and its
+/// lessons.
+fn set_ai_theta(scenario: &mut Scenario, [left, right]: [bool; 2], t: f32) {
+    let set = |s: &mut Scenario| {
+        if left {
+            s.left_team_difficulty = t;
+        }
+        if right {
+            s.right_team_difficulty = t;
+        }
     };
     set(scenario);
     if let Some(c) = &mut scenario.curriculum {
@@ -109,13 +121,15 @@ impl Shared {
 /// Runs `touchline play`.
 pub(crate) fn run(args: &PlayArgs) -> Result<(), CliError> {
     let mut scenario = touchline_dsl::load(&args.scenario)?;
-    if let Some(t) = args.theta {
-        set_opponent_theta(&mut scenario, args.side, t);
-    }
-    let (left, right) = match args.side {
-        PlaySide::Left => (1, 0),
-        PlaySide::Right => (0, 1),
+    let (left, right) = match (args.players, args.side) {
+        (2, _) => (1, 1),
+        (_, PlaySide::Left) => (1, 0),
+        (_, PlaySide::Right) => (0, 1),
     };
+    if let Some(t) = args.theta {
+        // θ is the AI's: the other team's with one person, both teams' AI players with two.
+        set_ai_theta(&mut scenario, if args.players == 2 { [true, true] } else { [right == 1, left == 1] }, t);
+    }
     // `v2` for `builtin_ai`: the person can hand the player to the AI.
     let config = EnvConfig { left_agents: left, right_agents: right, action_set: ActionSet::V2, checkpoints: false };
     let scripts = Scripts::compile(&scenario, &touchline_dsl::script_dir(&args.scenario), ScriptOptions::default())
@@ -129,7 +143,7 @@ pub(crate) fn run(args: &PlayArgs) -> Result<(), CliError> {
             scenario: args.scenario.clone(),
             help: format!(
                 "this scenario has {} controllable left and {} controllable right players; \
-                 play a side with one (--side left or --side right)",
+                 play a side with one (--side left or --side right; --players 2 needs one on each)",
                 controllable[0], controllable[1]
             ),
             source,

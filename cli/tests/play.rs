@@ -49,6 +49,8 @@ fn scratch(name: &str) -> PathBuf {
 struct Server {
     child: Child,
     url: String,
+    /// The rest of its stdout.
+    lines: BufReader<std::process::ChildStdout>,
 }
 
 impl Server {
@@ -64,9 +66,10 @@ impl Server {
             .spawn()
             .expect("start touchline play");
         let mut line = String::new();
-        BufReader::new(child.stdout.take().expect("stdout")).read_line(&mut line).expect("server line");
+        let mut lines = BufReader::new(child.stdout.take().expect("stdout"));
+        lines.read_line(&mut line).expect("server line");
         let url = line.split_whitespace().find(|w| w.starts_with("http://")).expect("the address").to_string();
-        Server { child, url }
+        Server { child, url, lines }
     }
 }
 
@@ -371,6 +374,50 @@ fn two_people_play_on_one_keyboard_and_in_two_tabs() {
     let (b, a) = (position(&before, right), position(&after, right));
     assert!(a.1 > b.1 + 0.5, "the right player ran down: {b:?} -> {a:?}");
     drop((page, tab, server));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 19: a program plays the opponent over the local socket (as examples/python/play_policy.py
+/// does with a saved SB3 policy): it gets the right player's `simple115v2` observation after every
+/// step and its answer, `bottom` in that player's own frame, runs him up the screen.
+#[test]
+fn a_policy_on_the_socket_plays_the_opponent() {
+    let Some(browser) = browser_or_skip() else { return };
+    let dir = scratch("policy");
+    let mut server = Server::start_with("academy_3_vs_1_with_keeper", &dir.join("replays"), &["--opponent-port", "0"]);
+    let mut line = String::new();
+    server.lines.read_line(&mut line).expect("the opponent's line");
+    let address = line.split_whitespace().find(|w| w.starts_with("127.0.0.1:")).expect("the port").to_string();
+    let stream = std::net::TcpStream::connect(&address).expect("connect");
+    let mut answers = stream.try_clone().expect("clone");
+    let observed = std::thread::spawn(move || {
+        let mut sizes = Vec::new();
+        for line in BufReader::new(stream).lines() {
+            let Ok(line) = line else { break };
+            let message: Value = serde_json::from_str(&line).expect("json");
+            sizes.push(message["observation"].as_array().map_or(0, Vec::len));
+            assert_eq!(message["side"], "right");
+            let reply = json!({ "turn": message["turn"], "action": 7 }).to_string() + "\n";
+            if answers.write_all(reply.as_bytes()).is_err() || sizes.len() >= 12 {
+                break;
+            }
+        }
+        sizes
+    });
+    let mut page = Browser::launch(&browser, &dir.join("profile"));
+    page.open(&server.url);
+    let start = page.wait_for("the policy", |s| s["policy_connected"] == json!(true));
+    assert_eq!(start["controllers"].as_array().map(Vec::len), Some(1), "one person");
+    // The policy's player: the second controlled one (env controllers are left team first).
+    let right = start["controlled"][1].as_u64().expect("the policy's player") as usize;
+    assert_eq!(start["roster"][right][0], 1, "on the right team");
+    page.tap(D, 100);
+    let later = page.wait_for("ten steps", |s| s["step"].as_u64().unwrap_or(0) >= 10);
+    let (b, a) = (position(&start, right), position(&later, right));
+    assert!(a.1 < b.1 - 0.5, "the policy ran its player up the screen: {b:?} -> {a:?}");
+    let sizes = observed.join().expect("the policy thread");
+    assert!(sizes.len() >= 10 && sizes.iter().all(|&n| n == 115), "{sizes:?}");
+    drop((page, server));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

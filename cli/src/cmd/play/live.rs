@@ -14,6 +14,7 @@ use touchline_engine::{Env, Event, Side};
 use touchline_render::replay::{Frame, Recorder};
 
 use super::controller::{Button, HumanController};
+use super::policy::PolicySocket;
 
 /// How many recent events (passes, shots, goals, saves of the replay) the page lists.
 const EVENTS_KEPT: usize = 8;
@@ -71,6 +72,9 @@ pub(crate) struct LiveState<'a> {
     mode: &'static str,
     /// The action the person's controller sent in the last step (GRF's name).
     last_action: &'static str,
+    /// With `--opponent-port`: whether a policy is connected (the built-in AI plays its player
+    /// until one is).
+    policy_connected: Option<bool>,
     /// Every person at the match (one, or one per team): side, AI hand-over, last action, their
     /// team's passes and shots. The fields above are the first person's.
     controllers: Vec<ControllerState>,
@@ -99,6 +103,10 @@ pub(crate) struct LiveMatch {
     env: Env,
     /// One per person, in the env's controller order (left team first).
     controllers: Vec<HumanController>,
+    /// The env controller each person plays.
+    people: Vec<usize>,
+    /// The opponent played by a program over a socket, if any.
+    policy: Option<PolicySocket>,
     recorder: Recorder,
     scripts: Vec<(String, String)>,
     record_dir: PathBuf,
@@ -114,13 +122,23 @@ pub(crate) struct LiveMatch {
 }
 
 impl LiveMatch {
-    /// A match of `env` (just reset), whose episodes are saved into `record_dir`.
-    pub(crate) fn new(env: Env, scripts: Vec<(String, String)>, record_dir: PathBuf, name: String) -> LiveMatch {
+    /// A match of `env` (just reset), whose episodes are saved into `record_dir`; `policy` plays
+    /// its env controller, people the others.
+    pub(crate) fn new(
+        env: Env,
+        scripts: Vec<(String, String)>,
+        record_dir: PathBuf,
+        name: String,
+        policy: Option<PolicySocket>,
+    ) -> LiveMatch {
         let recorder = Recorder::start(&env).with_scripts(scripts.iter().cloned());
-        let people = env.num_controllers();
+        let seats = env.num_controllers();
+        let people: Vec<usize> = (0..seats).filter(|&i| policy.as_ref().is_none_or(|p| p.seat != i)).collect();
         let mut live = LiveMatch {
             env,
-            controllers: vec![HumanController::default(); people],
+            controllers: vec![HumanController::default(); people.len()],
+            people,
+            policy,
             recorder,
             scripts,
             record_dir,
@@ -129,12 +147,15 @@ impl LiveMatch {
             version: 1,
             roster: Vec::new(),
             frame: Frame::default(),
-            last_actions: vec![touchline_engine::Action::Idle; people],
+            last_actions: vec![touchline_engine::Action::Idle; seats],
             events: VecDeque::new(),
             saved: None,
             error: None,
         };
         live.capture();
+        if let Some(p) = &mut live.policy {
+            p.observe(&live.env, false);
+        }
         live
     }
 
@@ -162,7 +183,7 @@ impl LiveMatch {
 
     /// Side of the person's player (a scenario may swap sides on odd episodes).
     fn side(&self) -> Side {
-        self.env.controller_sides().next().unwrap_or(Side::Left)
+        self.env.controller_sides().nth(self.people[0]).unwrap_or(Side::Left)
     }
 
     /// Applies one message from the page; `Err` names what was not understood (nothing is applied).
@@ -217,8 +238,15 @@ impl LiveMatch {
             return;
         }
         let sides: Vec<Side> = self.env.controller_sides().collect();
-        let actions: Vec<_> =
-            self.controllers.iter_mut().zip(sides).map(|(c, side)| c.next_action(side == Side::Right)).collect();
+        let mut people = self.controllers.iter_mut();
+        let actions: Vec<_> = sides
+            .iter()
+            .enumerate()
+            .map(|(seat, &side)| match &self.policy {
+                Some(p) if p.seat == seat => p.action(),
+                _ => people.next().map_or(touchline_engine::Action::Idle, |c| c.next_action(side == Side::Right)),
+            })
+            .collect();
         let outcome = match self.env.step(&actions) {
             Ok(outcome) => outcome,
             Err(e) => {
@@ -235,7 +263,11 @@ impl LiveMatch {
         self.last_actions.clone_from(&actions);
         self.note_events();
         self.capture();
-        if outcome.terminated || outcome.truncated {
+        let done = outcome.terminated || outcome.truncated;
+        if let Some(p) = &mut self.policy {
+            p.observe(&self.env, done);
+        }
+        if done {
             self.phase = Phase::FullTime;
             self.save();
         }
@@ -293,6 +325,9 @@ impl LiveMatch {
         }
         self.recorder = Recorder::start(&self.env).with_scripts(self.scripts.iter().cloned());
         self.controllers.iter_mut().for_each(HumanController::new_episode);
+        if let Some(p) = &mut self.policy {
+            p.observe(&self.env, false);
+        }
         self.events.clear();
         self.error = None;
         self.phase = Phase::Playing;
@@ -323,13 +358,15 @@ impl LiveMatch {
             controlled: f.controlled.clone(),
             score: f.score,
             mode: info.game_mode.name(),
-            last_action: self.last_actions.first().map_or("idle", |a| a.name()),
+            last_action: self.last_actions[self.people[0]].name(),
+            policy_connected: self.policy.as_ref().map(PolicySocket::connected),
             controllers: self
-                .env
-                .controller_sides()
+                .people
+                .iter()
                 .zip(&self.controllers)
-                .zip(&self.last_actions)
-                .map(|((side, c), a)| {
+                .map(|(&seat, c)| {
+                    let side = self.env.controller_sides().nth(seat).unwrap_or(Side::Left);
+                    let a = self.last_actions[seat];
                     let team = &self.env.game().stats().teams[side as usize];
                     ControllerState {
                         side: side.name(),
@@ -379,7 +416,7 @@ mod tests {
         let config =
             EnvConfig { left_agents, right_agents, action_set: touchline_engine::ActionSet::V2, checkpoints: false };
         let env = Env::with_config(scenario, config, 0).expect("env");
-        LiveMatch::new(env, Vec::new(), dir.to_path_buf(), name.to_string())
+        LiveMatch::new(env, Vec::new(), dir.to_path_buf(), name.to_string(), None)
     }
 
     fn send(live: &mut LiveMatch, held: &[&str], pressed: &[&str]) {

@@ -17,6 +17,7 @@
 
 mod controller;
 mod live;
+mod policy;
 
 use std::io::{Read, Write};
 use std::path::PathBuf;
@@ -58,6 +59,12 @@ pub(crate) struct PlayArgs {
     /// or at `/?player=0`, the right team's on the right-hand keys or at `/?player=1`).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=2), conflicts_with = "side")]
     players: u8,
+
+    /// Let a program (a Python policy: examples/python/play_policy.py) play the other team's
+    /// active player, connecting to 127.0.0.1 on this port (0: any free one); the built-in AI
+    /// plays him until it connects. docs/play-protocol.md has the protocol.
+    #[arg(long, value_name = "PORT", conflicts_with = "players")]
+    opponent_port: Option<u16>,
 
     /// Difficulty θ in [0, 1] of the built-in AI on the other team, or with `--players 2` of
     /// both teams' AI players (default: the scenario's).
@@ -121,14 +128,21 @@ impl Shared {
 /// Runs `touchline play`.
 pub(crate) fn run(args: &PlayArgs) -> Result<(), CliError> {
     let mut scenario = touchline_dsl::load(&args.scenario)?;
+    let policy = args.opponent_port.is_some();
     let (left, right) = match (args.players, args.side) {
         (2, _) => (1, 1),
+        (_, _) if policy => (1, 1),
         (_, PlaySide::Left) => (1, 0),
         (_, PlaySide::Right) => (0, 1),
     };
     if let Some(t) = args.theta {
         // θ is the AI's: the other team's with one person, both teams' AI players with two.
-        set_ai_theta(&mut scenario, if args.players == 2 { [true, true] } else { [right == 1, left == 1] }, t);
+        let ai = match args.side {
+            _ if args.players == 2 => [true, true],
+            PlaySide::Left => [false, true],
+            PlaySide::Right => [true, false],
+        };
+        set_ai_theta(&mut scenario, ai, t);
     }
     // `v2` for `builtin_ai`: the person can hand the player to the AI.
     let config = EnvConfig { left_agents: left, right_agents: right, action_set: ActionSet::V2, checkpoints: false };
@@ -143,7 +157,7 @@ pub(crate) fn run(args: &PlayArgs) -> Result<(), CliError> {
             scenario: args.scenario.clone(),
             help: format!(
                 "this scenario has {} controllable left and {} controllable right players; \
-                 play a side with one (--side left or --side right; --players 2 needs one on each)",
+                 play a side with one (--side left or --side right; --players 2 and --opponent-port need one on each)",
                 controllable[0], controllable[1]
             ),
             source,
@@ -151,13 +165,27 @@ pub(crate) fn run(args: &PlayArgs) -> Result<(), CliError> {
     })?;
     let record = args.record.clone().unwrap_or_else(|| std::env::temp_dir().join("touchline-plays"));
     let name = env.scenario().name.clone();
-    let shared =
-        Arc::new(Shared { live: Mutex::new(LiveMatch::new(env, sources, record, name)), changed: Condvar::new() });
+    // The opponent's seat: env controllers are ordered left team first.
+    let opponent = match args.opponent_port {
+        Some(port) => {
+            let seat = usize::from(args.side == PlaySide::Left);
+            let (socket, port) = policy::PolicySocket::listen(port, seat)
+                .map_err(|e| CliError::Serve { reason: format!("opponent port {port}: {e}") })?;
+            Some((socket, port))
+        }
+        None => None,
+    };
+    let opponent_port = opponent.as_ref().map(|(_, port)| *port);
+    let live = LiveMatch::new(env, sources, record, name, opponent.map(|(socket, _)| socket));
+    let shared = Arc::new(Shared { live: Mutex::new(live), changed: Condvar::new() });
 
     let server = tiny_http::Server::http(("127.0.0.1", args.port))
         .map_err(|e| CliError::Serve { reason: format!("port {}: {e}", args.port) })?;
     let port = server.server_addr().to_ip().map_or(args.port, |a| a.port());
     println!("play {} at http://127.0.0.1:{port}/ (Ctrl-C to stop)", args.scenario);
+    if let Some(p) = opponent_port {
+        println!("opponent: waiting for a policy on 127.0.0.1:{p} (the built-in AI plays until one connects)");
+    }
     std::io::stdout().flush()?;
 
     let clock = Arc::clone(&shared);

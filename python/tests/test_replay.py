@@ -218,3 +218,19 @@ def test_arrays_of_values_are_stored_per_element_in_order(tmp_path: Path) -> Non
         env.record_values({"grid": np.zeros((2, 2))})
     with pytest.raises(ValueError, match="infinite"):
         env.record_values({"probs": [0.5, float("inf")]})
+
+
+def test_two_recorders_sharing_a_folder_never_overwrite_each_other(tmp_path: Path) -> None:
+    # Two envs of a vector env (or two runs) recording into one folder with the default prefix:
+    # the second keeps the first's files and writes `_1` names, with one warning.
+    first = touchline.RecordReplay(touchline.make("academy_empty_goal_close"), tmp_path)
+    second = touchline.RecordReplay(touchline.make("academy_empty_goal_close"), tmp_path)
+    first_hashes, _, first_info = play_recorded(first, seed=1)
+    with pytest.warns(UserWarning, match="already exists"):
+        second_hashes, _, second_info = play_recorded(second, seed=2)
+    assert Path(first_info["replay_path"]) == tmp_path / "episode-0.tlreplay"
+    assert Path(second_info["replay_path"]) == tmp_path / "episode-0_1.tlreplay"
+    assert touchline.Replay(first_info["replay_path"]).frame_hashes == first_hashes
+    assert touchline.Replay(second_info["replay_path"]).frame_hashes == second_hashes
+    first.close()
+    second.close()

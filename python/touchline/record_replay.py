@@ -17,7 +17,9 @@ Then `touchline view replays` shows the agent's episodes in the browser.
 
 from __future__ import annotations
 
+import itertools
 import os
+import warnings
 from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
@@ -55,6 +57,7 @@ class _Episodes:
         self.prefix = name_prefix
         self.episode = -1
         self.recording = False
+        self.warned = False
 
     def reset(self) -> None:
         """After the base env's reset: starts recording the new episode if it is chosen."""
@@ -65,16 +68,41 @@ class _Episodes:
         else:
             self.base.stop_recording()
 
-    def path(self) -> Path:
-        return self.folder / f"{self.prefix}-{self.episode}.tlreplay"
+    def claim(self) -> Path:
+        """The file for this episode, `{prefix}-{episode}.tlreplay`, created empty to hold the
+        name. A name already taken (another wrapper writing to this folder with the same prefix, in
+        this process or another, or an earlier run's file) is kept, and `_1`, `_2`, ... is added
+        instead, with one warning: two recorders never overwrite each other's episodes."""
+        stem = f"{self.prefix}-{self.episode}"
+        for k in itertools.count():
+            path = self.folder / (f"{stem}.tlreplay" if k == 0 else f"{stem}_{k}.tlreplay")
+            try:
+                os.close(os.open(path, os.O_CREAT | os.O_EXCL | os.O_WRONLY))
+            except FileExistsError:
+                continue
+            if k and not self.warned:
+                self.warned = True
+                warnings.warn(
+                    f"RecordReplay: {self.folder / (stem + '.tlreplay')} already exists, so this "
+                    f"recorder writes {path.name} (and adds _1, _2, ... whenever a name is taken); "
+                    "give each env its own folder or name_prefix to keep the names plain",
+                    stacklevel=4,
+                )
+            return path
+        raise AssertionError("unreachable")
 
     def end(self) -> Path | None:
         """At the episode's end: saves it if it was recorded; returns the file."""
         if not self.recording:
             return None
         self.recording = False
-        path = self.path()
-        self.base.save_replay(path)
+        path = self.claim()
+        try:
+            self.base.save_replay(path)
+        except BaseException:
+            # Nothing half-written is left: the claimed name goes with the failed save.
+            path.unlink(missing_ok=True)
+            raise
         return path
 
     def close(self) -> None:
@@ -91,7 +119,8 @@ class RecordReplay(gymnasium.Wrapper[Any, Any, Any, Any]):
             wrappers around them), or a touchline PettingZoo env (`touchline.parallel_env`): then
             a `ParallelRecordReplay` is returned.
         folder: where the files go (made if missing): `{folder}/{name_prefix}-{episode}.tlreplay`,
-            `episode` counting the episodes started through this wrapper from 0.
+            `episode` counting the episodes started through this wrapper from 0. An existing file
+            is never overwritten: the name gets `_1`, `_2`, ... instead, with one warning.
         episode_trigger: which episodes to record (`lambda e: e % 100 == 0`); None records all.
         name_prefix: the files' name before `-{episode}`.
 

@@ -288,7 +288,10 @@ fn point(name: &str, args: &[Argument], span: Span, r: &mut Reader<'_>) -> Optio
             format!("`{name}` goes off the pitch, to ({}, {})", super::value::short(p[0]), super::value::short(p[1])),
             span,
             "off the pitch",
-            "points are in the player's team frame: x in [-1, 1] from his own goal line, y in [-0.42, 0.42]; the rim allows |x| <= 1.1, |y| <= 0.48",
+            format!(
+                "points are in the player's team frame: {}",
+                super::pitch::units_help(" from his own goal line", "")
+            ),
         );
         return None;
     }

@@ -1,6 +1,7 @@
 //! Checks on the merged scenario: team sizes, goalkeepers, positions on the pitch, `require`
 //! constraints that can hold, and the engine's own validation as a backstop.
 
+use touchline_engine::geometry::coords::{SCENARIO_LINES, SCENARIO_RIM};
 use touchline_engine::scenario::{MAX_PLACEMENT_TRIES, Spot};
 use touchline_engine::{MAX_PLAYERS_PER_TEAM, Role, Scenario};
 
@@ -9,11 +10,10 @@ use super::value::short;
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Source};
 use crate::syntax::Span;
 
-/// The rim: the farthest a player or the ball may start, or a behaviour's point may be
-/// (60 m × 40 m; grf.md §7.4).
-pub(super) const RIM: [f32; 2] = [1.1, 0.48];
+/// The rim: the farthest a player or the ball may start, or a behaviour's point may be.
+pub(super) const RIM: [f32; 2] = SCENARIO_RIM;
 /// The lines: |x| ≤ 1, |y| ≤ 0.42.
-const LINES: [f32; 2] = [1.0, 0.42];
+const LINES: [f32; 2] = SCENARIO_LINES;
 /// Placements drawn to estimate how often the `require` constraints hold.
 const ACCEPTANCE_SAMPLES: u32 = 4_000;
 /// Largest accepted chance that one reset runs out of retries.
@@ -238,8 +238,17 @@ fn position(bounds: [[f32; 2]; 2], what: &str, loc: &Loc, diags: &mut Diagnostic
     if beyond(RIM) {
         let (starts, place) = describe();
         diags.push(
-            Diagnostic::new(Code::OutOfRange, format!("{what} {starts} off the pitch {place}"), &loc.source, loc.span, "off the pitch")
-                .with_help("positions are in scenario units: x in [-1, 1] (goal lines), y in [-0.42, 0.42] (touchlines); the rim allows |x| <= 1.1, |y| <= 0.48"),
+            Diagnostic::new(
+                Code::OutOfRange,
+                format!("{what} {starts} off the pitch {place}"),
+                &loc.source,
+                loc.span,
+                "off the pitch",
+            )
+            .with_help(format!(
+                "positions are in scenario units: {}",
+                super::pitch::units_help(" (goal lines)", " (touchlines)")
+            )),
         );
     } else if beyond(LINES) {
         let (starts, place) = describe();

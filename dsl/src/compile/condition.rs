@@ -394,7 +394,7 @@ pub(crate) fn target(e: &Expr, ctx: Context, s: &Scenario, r: &mut Reader<'_>, p
                     format!("the point ({}, {}) is off the pitch", short(p[0]), short(p[1])),
                     e.span,
                     "off the pitch",
-                    "x in [-1, 1] between the goal lines, y in [-0.42, 0.42]; the rim allows |x| <= 1.1, |y| <= 0.48",
+                    super::pitch::units_help(" between the goal lines", ""),
                 );
                 return None;
             }

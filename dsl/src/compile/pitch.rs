@@ -5,6 +5,7 @@
 //! ball and end conditions the left team's frame (global).
 
 use touchline_engine::Role;
+use touchline_engine::geometry::coords::{SCENARIO_LINES, SCENARIO_RIM};
 use touchline_engine::scenario::Region;
 
 /// Metres per scenario unit along x for players (the engine places a player at 55·x m, grf.md §2.2).
@@ -26,8 +27,17 @@ const GOAL_AREA_DEPTH: f32 = (5.5 / PLAYER_X_METRES) as f32;
 const GOAL_AREA_HALF_WIDTH: f32 = (9.16 / PLAYER_Y_METRES) as f32;
 /// Centre circle radius, 9.15 m (Law 1), in x units.
 const CENTRE_CIRCLE: f32 = (9.15 / PLAYER_X_METRES) as f32;
-/// Touchline y in scenario units.
-const TOUCHLINE: f32 = 0.42;
+/// Touchline y in scenario units ([`SCENARIO_LINES`]).
+const TOUCHLINE: f32 = SCENARIO_LINES[1];
+
+/// The x and y ranges of the pitch and the rim, for a diagnostic's help: `"x in [-1, 1]{x_note}, y
+/// in [-0.42, 0.42]{y_note}; the rim allows |x| <= 1.1, |y| <= 0.48"`, from the engine's
+/// [`SCENARIO_LINES`] and [`SCENARIO_RIM`].
+pub(super) fn units_help(x_note: &str, y_note: &str) -> String {
+    let [x, y] = SCENARIO_LINES;
+    let [rim_x, rim_y] = SCENARIO_RIM;
+    format!("x in [-{x}, {x}]{x_note}, y in [-{y}, {y}]{y_note}; the rim allows |x| <= {rim_x}, |y| <= {rim_y}")
+}
 
 /// Names of the built-in regions, for suggestions.
 pub(crate) const REGION_NAMES: [&str; 8] = [

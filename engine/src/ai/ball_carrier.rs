@@ -8,7 +8,7 @@ use glam::Vec2;
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::game::{Kick, KickKind, KickTarget};
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
-use crate::player::{Player, SPRINT_SPEED, nearest_distance};
+use crate::player::{Player, SPRINT_SPEED, difficulty_scale, nearest_distance};
 use crate::rng::MatchRng;
 
 /// Distance (m) from `p` to the segment `a`–`b`.
@@ -218,7 +218,7 @@ pub(crate) fn plan(
         if !mate.active || mate.index == me.index || mate.is_keeper() {
             continue;
         }
-        if crate::rules::offside::beyond(mate, offside_line) && rng.unit() < 0.3 + 0.7 * difficulty.theta {
+        if crate::rules::offside::beyond(mate, offside_line) && rng.unit() < difficulty_scale(difficulty.theta) {
             continue;
         }
         let m_t = frame.vec2(mate.position);

@@ -1,6 +1,10 @@
 //! Difficulty θ ∈ [0, 1]: how quickly and how well a team's AI decides (GRF: easy 0.05, medium
 //! 0.6, hard 0.95; grf.md §2.3, §7.6).
 
+/// How much of his ability a player of a team of difficulty θ shows, 0.3 + 0.7·θ: defined with
+/// the players' stats, which it scales, and used by the AI for its reach too.
+pub use crate::player::difficulty_scale;
+
 /// Noise on the value of the AI's options, at every θ (see [`Difficulty::decision_noise`]).
 const DECISION_NOISE: f32 = 0.2;
 

@@ -10,7 +10,7 @@ use glam::Vec2;
 use super::MatchView;
 use crate::geometry::pitch::HALF_LENGTH;
 use crate::geometry::{Side, TeamFrame};
-use crate::player::{MAX_PLAYERS_PER_TEAM, Player, Role};
+use crate::player::{MAX_PLAYERS_PER_TEAM, Player, Role, difficulty_scale};
 
 /// How many opponents a team marks man to man (GRF: three).
 pub const MARKED: usize = 3;
@@ -176,7 +176,7 @@ pub fn position(p: &Player, man: &Player, on_ball: bool, shape: Vec2, frame: Tea
     if late > 0.0 {
         spot += (own_goal - spot).normalize_or_zero() * late * 0.7;
     }
-    shape.lerp(spot, marking_weight(p.role) * (0.3 + 0.7 * theta))
+    shape.lerp(spot, marking_weight(p.role) * difficulty_scale(theta))
 }
 
 #[cfg(test)]

@@ -48,7 +48,7 @@ impl Match {
         let theta = self.theta(g);
         let own = self.behaviours.get(g).and_then(|b| b.builtin().flatten());
         let p = &mut self.players[g];
-        p.fresh_speed = top_speed(p.attributes.speed * (0.3 + 0.7 * theta));
+        p.fresh_speed = top_speed(p.attributes.speed * crate::player::difficulty_scale(theta));
         p.max_speed = p.fresh_speed * speed_factor(p.fatigue);
         let (side, index) = (p.side, p.index);
         self.ai[side.index()].set_player_difficulty(index, own);

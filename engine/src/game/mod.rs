@@ -266,7 +266,7 @@ impl Match {
         for p in &mut m.players {
             // Top speed follows the scenario's difficulty; fatigue stays as saved.
             let theta = difficulty[p.side.index()];
-            p.fresh_speed = crate::player::top_speed(p.attributes.speed * (0.3 + 0.7 * theta));
+            p.fresh_speed = crate::player::top_speed(p.attributes.speed * crate::player::difficulty_scale(theta));
             p.max_speed = p.fresh_speed * crate::player::fatigue::speed_factor(p.fatigue);
         }
         m.offsides = scenario.offsides;

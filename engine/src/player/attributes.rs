@@ -6,6 +6,14 @@
 
 use serde::{Deserialize, Serialize};
 
+/// How much of his ability a player of a team of difficulty `theta` (in [0, 1]) shows: GRF
+/// multiplies every stat by 0.3 + 0.7·θ (grf.md §7.6), so the easiest side plays at 30 % and the
+/// hardest at 100 %. The AI's reach (hunting distance, marking) scales the same way.
+#[inline]
+pub fn difficulty_scale(theta: f32) -> f32 {
+    0.3 + 0.7 * theta
+}
+
 /// A player's abilities, each in [0, 1] (1 = the best). The team's difficulty θ and the player's
 /// fatigue scale them in play (grf.md §7.6): every stat is multiplied by (0.3 + 0.7·θ).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -6,7 +6,7 @@ pub mod fatigue;
 mod player;
 mod role;
 
-pub use attributes::Attributes;
+pub use attributes::{Attributes, difficulty_scale};
 pub use player::{DRIBBLE_SPEED, Player, SPRINT_SPEED, WALK_SPEED, nearest_distance, top_speed};
 pub use role::Role;
 

@@ -114,7 +114,7 @@ impl Player {
     /// (grf.md §7.6), in [0, 1].
     #[inline]
     pub fn skill(&self, stat: f32, theta: f32) -> f32 {
-        stat * (0.3 + 0.7 * theta) * super::fatigue::skill_factor(self.fatigue)
+        stat * super::difficulty_scale(theta) * super::fatigue::skill_factor(self.fatigue)
     }
 
     /// Stops the player where he stands and clears any action in progress.

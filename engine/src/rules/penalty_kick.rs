@@ -18,11 +18,10 @@ use glam::Vec2;
 use super::Restart;
 use crate::game::{GameMode, Match};
 use crate::geometry::pitch::{
-    BALL_RADIUS, CENTRE_CIRCLE_RADIUS, HALF_LENGTH, LINE_HALF_WIDTH, PENALTY_AREA_DEPTH, PENALTY_AREA_HALF_WIDTH,
+    CENTRE_CIRCLE_RADIUS, HALF_LENGTH, LINE_HALF_WIDTH, PENALTY_AREA_DEPTH, PENALTY_AREA_HALF_WIDTH,
     PENALTY_MARK_DISTANCE,
 };
 use crate::geometry::{Side, TeamFrame};
-use crate::physics::Ball;
 
 /// Keepers' depth at set pieces (grf.md §7.5).
 const KEEPER_LINE_X: f32 = 0.98 * HALF_LENGTH;
@@ -80,15 +79,7 @@ pub(crate) fn set_up(m: &mut Match, restart: Restart) {
             p.position = frame.vec2(at);
         }
     }
-    m.ball = Ball::at_rest(restart.spot);
-    m.ball.position.z = BALL_RADIUS;
-    m.owner = Some(taker);
-    m.carry_distance = 0.5;
-    m.last_touch = Some(taker);
-    // The referee hands the ball over: the taker's team has it without winning it.
-    m.possessor = Some(taker);
-    m.taker = Some(taker);
-    m.mode = GameMode::Penalty;
+    super::set_piece::hand_ball_to(m, taker, restart.spot, GameMode::Penalty);
 }
 
 #[cfg(test)]

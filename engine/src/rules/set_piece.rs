@@ -55,13 +55,19 @@ pub(crate) fn set_up(m: &mut Match, restart: Restart) {
             }
         }
     }
-    m.ball = Ball::at_rest(restart.spot);
+    hand_ball_to(m, taker, restart.spot, restart.mode);
+}
+
+/// The referee hands the ball, on the spot `spot` (m), to `taker` for the set piece `mode`: he
+/// holds it at his feet until he plays it, and his team has it without having won it (no
+/// possession change is counted). Shared with [`super::penalty_kick`].
+pub(super) fn hand_ball_to(m: &mut Match, taker: usize, spot: Vec2, mode: GameMode) {
+    m.ball = Ball::at_rest(spot);
     m.ball.position.z = BALL_RADIUS;
     m.owner = Some(taker);
     m.carry_distance = 0.5;
     m.last_touch = Some(taker);
-    // The referee hands the ball over: the taker's team has it without winning it.
     m.possessor = Some(taker);
     m.taker = Some(taker);
-    m.mode = restart.mode;
+    m.mode = mode;
 }

@@ -220,11 +220,6 @@ impl Default for Scenario {
     }
 }
 
-/// Largest |x| accepted for a player or the ball: the pitch's outer rim (60 m / 55 m).
-const MAX_ABS_X: f32 = 1.1;
-/// Largest |y| accepted: the outer rim (40 m) in normalised units.
-const MAX_ABS_Y: f32 = 0.48;
-
 /// 0 for the left team, 1 for the right.
 fn side_index(side: &str) -> usize {
     usize::from(side == "right")
@@ -232,7 +227,8 @@ fn side_index(side: &str) -> usize {
 
 /// Whether `(x, y)` is finite and inside the rim.
 fn on_pitch(x: f32, y: f32) -> bool {
-    x.is_finite() && y.is_finite() && x.abs() <= MAX_ABS_X && y.abs() <= MAX_ABS_Y
+    let [rim_x, rim_y] = crate::geometry::coords::SCENARIO_RIM;
+    x.is_finite() && y.is_finite() && x.abs() <= rim_x && y.abs() <= rim_y
 }
 
 /// A spot's parameters are sound and every draw lands inside the rim.

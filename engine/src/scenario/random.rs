@@ -7,13 +7,14 @@
 use serde::{Deserialize, Serialize};
 
 use super::placement::Anchor;
+use crate::geometry::coords::SCENARIO_LINES;
 use crate::rng::MatchRng;
 
-/// The pitch lines in normalised units: |x| ≤ 1, |y| ≤ 0.42 (grf.md §7.4). Normal draws are clipped
-/// to them ("normal clipped to the pitch").
-pub const PITCH_HALF_LENGTH: f32 = 1.0;
-/// Half the pitch width in normalised units.
-pub const PITCH_HALF_WIDTH: f32 = 0.42;
+/// The pitch lines in normalised units, |x| ≤ 1 ([`SCENARIO_LINES`]). Normal draws are clipped to
+/// them ("normal clipped to the pitch").
+pub const PITCH_HALF_LENGTH: f32 = SCENARIO_LINES[0];
+/// Half the pitch width in normalised units, 0.42 ([`SCENARIO_LINES`]).
+pub const PITCH_HALF_WIDTH: f32 = SCENARIO_LINES[1];
 
 /// One coordinate: a number, or a distribution drawn at every reset.
 ///

@@ -47,6 +47,9 @@ TEXTURE_METRICS = (
     "turnovers",
     "possession",
     "width_m",
+    "loose_share",
+    "owned_spell",
+    "loose_spell",
 )
 #: §4's metrics that are counts per match (the zero-se floor applies); the others are plain means.
 TEXTURE_COUNTS = {"goal_kicks", "free_kicks", "corners", "throw_ins", "penalties", "yellow_cards"}
@@ -229,7 +232,9 @@ def _number(value: float | None, digits: int) -> str:
 def _digits(figure: fs.Figure) -> int:
     if figure.kind == "proportion" or figure.name in ("max ball x", "possession"):
         return 3
-    return 1 if figure.kind in ("length", "info") or figure.name == "width_m" else 2
+    if figure.name == "loose_share":
+        return 3
+    return 1 if figure.kind in ("length", "info") or figure.name in ("width_m", "owned_spell", "loose_spell") else 2
 
 
 def format_figure(label: str, figure: fs.Figure) -> str:

@@ -187,7 +187,9 @@ class MatchStats:
     two players of one team in normal play, a turnover ownership moving to the other team in
     normal play; possession is our share of the steps on which a team owns the ball; width is the
     median, over normal-play owned steps, of the y-span of the outfield players of the team in
-    possession.
+    possession. The flow of play: the share of normal-play steps on which nobody owns the ball,
+    and the median length (steps) of a spell of one player owning it and of a spell of nobody
+    owning it, counted in normal play (a restart ends a spell).
     """
 
     restarts: dict[str, int] = field(default_factory=lambda: dict.fromkeys(RESTARTS.values(), 0))
@@ -196,6 +198,11 @@ class MatchStats:
     turnovers: int = 0
     owned_steps: list[int] = field(default_factory=lambda: [0, 0])
     widths: list[float] = field(default_factory=list)
+    normal_steps: int = 0
+    loose_steps: int = 0
+    owned_spells: list[int] = field(default_factory=list)
+    loose_spells: list[int] = field(default_factory=list)
+    _spell: tuple[tuple[int, int] | None, int] = (None, 0)
     _mode: int = -1
     _cards: int = 0
     _owner: tuple[int, int] | None = None
@@ -213,6 +220,7 @@ class MatchStats:
         self.yellow_cards += max(0, cards - self._cards)
         self._cards = cards
         team = int(obs["ball_owned_team"])
+        self._follow_spell(mode, None if team == -1 else (team, int(obs["ball_owned_player"])))
         if team == -1:
             return
         self.owned_steps[team] += 1
@@ -226,7 +234,28 @@ class MatchStats:
         if mode == NORMAL:
             self.widths.append(_outfield_span(obs, "left_team" if team == 0 else "right_team"))
 
+    def _follow_spell(self, mode: int, owner: tuple[int, int] | None) -> None:
+        """Extends the current spell (one owner, or nobody) or closes it and starts the next."""
+        current, length = self._spell
+        if mode != NORMAL:
+            self._close_spell()
+            return
+        self.normal_steps += 1
+        self.loose_steps += owner is None
+        if length and owner == current:
+            self._spell = (current, length + 1)
+        else:
+            self._close_spell()
+            self._spell = (owner, 1)
+
+    def _close_spell(self) -> None:
+        current, length = self._spell
+        if length:
+            (self.loose_spells if current is None else self.owned_spells).append(length)
+        self._spell = (None, 0)
+
     def summary(self) -> dict[str, float]:
+        self._close_spell()
         owned = sum(self.owned_steps)
         return {
             **{name: float(count) for name, count in self.restarts.items()},
@@ -235,6 +264,9 @@ class MatchStats:
             "turnovers": float(self.turnovers),
             "possession": self.owned_steps[0] / owned if owned else float("nan"),
             "width_m": statistics.median(self.widths) if self.widths else float("nan"),
+            "loose_share": self.loose_steps / self.normal_steps if self.normal_steps else float("nan"),
+            "owned_spell": statistics.median(self.owned_spells) if self.owned_spells else float("nan"),
+            "loose_spell": statistics.median(self.loose_spells) if self.loose_spells else float("nan"),
         }
 
 

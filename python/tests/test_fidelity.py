@@ -96,3 +96,39 @@ def test_builtin_against_builtin_at_equal_strength_is_level(tmp_path: Path) -> N
         difference = statistics.fmean(e.goals_for - e.goals_against for e in episodes)
         scores = [f"{e.goals_for}-{e.goals_against}" for e in episodes]
         assert abs(difference) <= 1.0, f"{name}: mean goal difference {difference:+.2f} ({scores})"
+
+
+def test_the_flow_of_play_counts_spells_of_one_owner_and_of_a_loose_ball() -> None:
+    # The harness's flow figures (GRF: the ball is nobody's on about 41 % of normal-play steps, a
+    # player keeps it a median 8-11 steps): spells end when the owner changes or play stops.
+    import numpy as np
+
+    def obs(mode: int, team: int, player: int) -> cases.Observation:
+        roles = np.array([0, 1])
+        return {
+            "game_mode": mode,
+            "ball_owned_team": team,
+            "ball_owned_player": player,
+            "left_team": np.zeros((2, 2)),
+            "right_team": np.zeros((2, 2)),
+            "left_team_roles": roles,
+            "right_team_roles": roles,
+            "left_team_active": np.array([True, True]),
+            "right_team_active": np.array([True, True]),
+            "left_team_yellow_card": np.zeros(2),
+            "right_team_yellow_card": np.zeros(2),
+        }
+
+    # Normal play: player (0, 1) for 3 steps, loose for 2, (1, 0) for 1, a throw-in, then loose.
+    owners = [(0, 1)] * 3 + [(-1, -1)] * 2 + [(1, 0)]
+    stats = cases.MatchStats()
+    stats.start(obs(0, -1, -1))
+    for team, player in owners:
+        stats.update(obs(0, team, player))
+    stats.update(obs(cases.THROW_IN, 1, 0))
+    stats.update(obs(0, -1, -1))
+    summary = stats.summary()
+    assert stats.owned_spells == [3, 1]
+    assert stats.loose_spells == [2, 1]
+    assert summary["loose_share"] == 3 / 7
+    assert summary["owned_spell"] == 2.0 and summary["loose_spell"] == 1.5

@@ -7,7 +7,7 @@
 use serde::{Deserialize, Serialize};
 
 /// How much of his ability a player of a team of difficulty `theta` (in [0, 1]) shows: GRF
-/// multiplies every stat by 0.3 + 0.7·θ (grf.md §7.6), so the easiest side plays at 30 % and the
+/// multiplies every stat by 0.3 + 0.7·θ, so the easiest side plays at 30 % and the
 /// hardest at 100 %. The AI's reach (hunting distance, marking) scales the same way.
 #[inline]
 pub fn difficulty_scale(theta: f32) -> f32 {

@@ -14,7 +14,7 @@ pub const FORMATION_X_SCALE: f32 = 55.0;
 pub const FORMATION_Y_SCALE: f32 = 2.36 * 36.0;
 
 /// Where the pitch's lines lie in a scenario's normalised units, `[x, y]`: the goal lines at
-/// |x| = 1, the touchlines at |y| = 0.42 (GRF's scenario frame: 0.42 units across are 68 m).
+/// |x| = 1, the touchlines at |y| = 0.42 (GRF's scenario frame: the pitch's 68 m are 0.84 units).
 pub const SCENARIO_LINES: [f32; 2] = [1.0, 0.42];
 /// The rim in the same units, `[x, y]`: the farthest a scenario may place a player or the ball,
 /// or a behaviour's point may lie, |x| ≤ 1.1 and |y| ≤ 0.48 (GRF's simulated area reaches 60 m

@@ -92,7 +92,7 @@ fn ceil_boundary(data: &[u8], mut i: usize) -> usize {
 
 /// Reads `span` from `inner` as [`SourceCode::read_span`] does, except that when the excerpt
 /// holds a line longer than [`LONG_LINE`] it is narrowed to the span's own lines, at most
-/// [`MARGIN`] bytes either side of the span.
+/// `MARGIN` bytes either side of the span.
 ///
 /// # Errors
 /// As `inner`; and [`MietteError::OutOfBounds`] for a span longer than [`MAX_LABEL`] that touches

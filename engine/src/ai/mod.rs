@@ -106,7 +106,7 @@ pub struct Plan {
     /// Run through the target at full speed instead of slowing down to stop on it (chasing a
     /// ball).
     pub run_through: bool,
-    /// A kick to strike first time at the loose ball he is going for ([`clearance`]).
+    /// A kick to strike first time at the loose ball he is going for (the AI's clearance module).
     #[serde(default)]
     pub first_time: Option<Kick>,
 }

@@ -20,7 +20,7 @@
 //! The team AI then decides for the others only (it neither plans for native players nor
 //! writes their inputs, and a team whose players are all native skips it: behaviours run at
 //! native speed, faster than the AI). After it, each native player's [`PlayerInput`] is computed
-//! from his behaviour ([`movement`]: idle, hold_position, follow, move_to, mark; [`ball_play`]:
+//! from his behaviour (`behaviour::movement`: idle, hold_position, follow, move_to, mark; `behaviour::ball_play`:
 //! dribble_to, pass_to, press, reusing the AI's ball prediction, closing down and kick aiming).
 //! During a set piece the other behaviours go on as in play (nobody but the taker may touch the
 //! ball then), except that `press` stands 9.15 m off the ball at the other team's restart.

@@ -16,7 +16,7 @@ pub enum Press {
     /// Nothing this step.
     None,
     /// A pass or shot button released (or held past 500 ms): the kick and its input power in
-    /// [0.01, 1] ([`input_power`]).
+    /// [0.01, 1] (`input_power` in this module).
     Kick(KickKind, f32),
     /// The sliding button.
     Slide,

@@ -80,7 +80,8 @@ fn a_pass_played_straight_back_leaves_the_ball_where_it_lay_while_he_turns() {
         }
         assert!(!during_turn.is_empty(), "seed {seed}: he winds up with the ball");
         for b in &during_turn {
-            let moved = ((b[0] - lay[0]).powi(2) + (b[1] - lay[1]).powi(2)).sqrt() * 54.4;
+            let (dx, dy) = (b[0] - lay[0], b[1] - lay[1]);
+            let moved = (dx * dx + dy * dy).sqrt() * 54.4;
             assert!(moved < 0.3, "seed {seed}: the ball moved {moved} m during the turn");
         }
         let (ball, _) = play(&mut env, &[], 20);

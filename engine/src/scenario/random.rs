@@ -350,7 +350,7 @@ mod tests {
             let c = choice.draw(&mut rng, 1.0, &mut Vec::new());
             seen[usize::from(c > 0.2)] = true;
             let [x, y] = circle.draw(&mut rng);
-            assert!(circle.contains(x, y) || (x - 0.5).hypot(y - 0.1) < 0.050_001);
+            assert!(circle.contains(x, y) || libm::hypotf(x - 0.5, y - 0.1) < 0.050_001);
         }
         assert_eq!(seen, [true, true]);
     }

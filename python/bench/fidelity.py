@@ -10,7 +10,7 @@ run with the same n, the same policies and the same end-of-episode classificatio
   * match: 11 v 11 easy / medium / hard × builtin_ai / idle / random (n = 5, 3001 steps): goals for
     and against per match;
     these 22 + 9 are "the 31 reference cases": a case is flagged when any of its figures is;
-  * probe: one action then idle (extra cases, not among the 31);
+  * probe: a few scripted actions then idle (extra cases, not among the 31);
   * texture: what a full match is made of, builtin_ai at easy / medium / hard (n = 6), next to GRF's
     and real football's figures (extra cases, not among the 31).
 
@@ -357,7 +357,7 @@ def main(argv: list[str] | None = None) -> int:
 SECTION_TITLES = {
     "academy": "Academy drills, random (n = 200) and idle (n = 50) [reference cases]",
     "match": "Full matches, 3001 steps, goals per match [reference cases]",
-    "probe": "One action, then idle (probes; not among the 31)",
+    "probe": "A few scripted actions, then idle (probes; not among the 31)",
     "texture": "What a full match is made of, builtin_ai, per match, both teams (not among the 31)",
 }
 

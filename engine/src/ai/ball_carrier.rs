@@ -1,6 +1,6 @@
 //! The ball carrier's choice, in the order GRF's on-the-ball AI makes it (GRF 2.10): under
 //! pressure in his own third, a clearance (the only choice with decision noise, weighed against
-//! dribbling on); else a pass to a better-placed team-mate ([`pass_choice`]); else, near the ideal
+//! dribbling on); else a pass to a better-placed team-mate (`ai::pass_choice`); else, near the ideal
 //! spot with a lane to goal, a shot; else he dribbles towards goal, bending round opponents.
 
 use glam::Vec2;

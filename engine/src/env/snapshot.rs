@@ -78,8 +78,9 @@ impl Snapshot {
     /// Python env's frame stacks) inside the checksummed payload; version 10 adds each player's
     /// queued first-time shot and blocked ball control (an agent's buttons at a loose ball);
     /// version 11 the end conditions' memory of a live shot and of the last game mode (`save`,
-    /// `restart_taken`).
-    pub const FORMAT_VERSION: u16 = 11;
+    /// `restart_taken`); version 12 each player's run when he asked for the kick he winds up
+    /// (a shot's difficulty depends on it).
+    pub const FORMAT_VERSION: u16 = 12;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {

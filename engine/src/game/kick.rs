@@ -105,20 +105,50 @@ pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2
     ball.spin = Vec3::ZERO;
 }
 
+/// GRF's `curve`: blends `x` in [0, 1] with a sine ease (flat at both ends) by `bias`.
+fn ease(x: f32, bias: f32) -> f32 {
+    (libm::sinf((x - 0.5) * std::f32::consts::PI) * 0.5 + 0.5) * bias + x * (1.0 - bias)
+}
+
+/// Below this speed (m/s) a body is standing, and a kick's touch follows his facing rather than
+/// his run (GRF's idle-to-dribble switch, 1.8 m/s).
+const STANDING_RUN: f32 = 1.8;
+
+/// How much further than his run a shooter's body has turned from the shot's line at the touch.
+/// GRF's touch direction is the kicking animation's own movement, and a shot hit across the run
+/// swings the body through the turn: measured in GRF 2.10 (academy_empty_goal_close, 4 steps'
+/// run then one shot press, 20 episodes each), a run straight at goal scores 20/20 at about
+/// 31 m/s, a run across the goal line (90° off) 0/20 at about 25 m/s, wide of the post; GRF's
+/// power at 25 m/s needs a touch about 160° off the shot, i.e. 1.8 times the run's angle.
+const SHOT_TURN: f32 = 1.8;
+
+/// How well the body's run at the touch suits a shot along `dir`, in [0, 1]: the best is a run
+/// 36° off the shot's line (either side), falling away to a run straight away from it (the run's
+/// angle counted [`SHOT_TURN`] times); GRF 2.10's shot model, whose direction factor is
+/// ease(1 − angle off the ideal / π, 0.8).
+fn shot_direction_factor(touch: Vec2, dir: Vec2) -> f32 {
+    const IDEAL: f32 = 0.2 * std::f32::consts::PI;
+    let off = ((signed_angle(touch, dir).abs() * SHOT_TURN).min(std::f32::consts::PI) - IDEAL).abs();
+    ease(1.0 - (off / std::f32::consts::PI).clamp(0.0, 1.0), 0.8)
+}
+
 /// A shot's velocity: GRF's blend of a best-case shot (the aimed direction, at the power asked
 /// for) and a worst-case one (dragged towards the shooter's run, with random error, lift and lost
-/// power), weighted by w = U^(0.7·skill). How much worse the worst case is grows with the shot's
-/// difficulty: hit across the body, or at a speed far from a dribble's (GRF 2.10's shot model).
-/// In a deterministic match w = 0: every shot is the best case.
+/// power), weighted by w = U^(0.7·skill); GRF 2.10's shot model. The touch is the body's run when
+/// the shot was asked for (`Player::kick_run`; his facing when he stood): the shot is weaker
+/// and harder to place the further it is hit across that run, the further the run's pace is from
+/// a dribble's, and the harder it is struck above 30 m/s. In a deterministic match w = 0: every
+/// shot is the best case.
 fn shot_velocity(kicker: &Player, dir: Vec2, distance: f32, kick: &Kick, accuracy: f32, rng: &mut MatchRng) -> Vec3 {
-    // GRF's shot power: 31.5–45 m/s from the button's power, times how well the body is turned
-    // to the shot and how fast the shooter runs onto the ball (a standing shot loses 30 %), capped
-    // by the shooter's skill at 32–45 m/s.
-    let across = 0.5 * (kicker.facing.dot(dir) + 1.0);
-    let run = kicker.velocity.length();
+    let run = kicker.kick_run.length();
+    let touch = if run >= STANDING_RUN { kicker.kick_run / run } else { kicker.facing };
+    let across = libm::powf(shot_direction_factor(touch, dir), 0.8);
+    // GRF's shot power: 31.5–45 m/s from the button's power, times how well the run suits the
+    // shot and how fast the shooter runs onto the ball (a standing shot loses 30 %), capped by
+    // the shooter's skill at 32–45 m/s.
     let speed = (45.0 * (0.7 + 0.3 * kick.power.clamp(0.0, 1.0).sqrt()))
-        * (0.7 + 0.3 * libm::powf(across, 0.8))
-        * (0.7 + 0.3 * libm::powf((run / 8.0).min(1.0), 0.3));
+        * (0.7 + 0.3 * across)
+        * (0.7 + 0.3 * libm::powf((run / SPRINT_SPEED).min(1.0), 0.3));
     let speed = speed.min(32.0 + 13.0 * accuracy);
     // The best case is struck low, GRF's 0.05 of lift, whatever the range: a shot from far dips,
     // bounces and rolls out its pace on the grass rather than looping in. Close in, a shot aimed
@@ -131,17 +161,20 @@ fn shot_velocity(kicker: &Player, dir: Vec2, distance: f32, kick: &Kick, accurac
     if !rng.noisy() {
         return best;
     }
-    let pace = 1.0 - 0.4 * ((run - DRIBBLE_SPEED).abs() / SPRINT_SPEED).min(1.0);
-    let difficulty = (1.0 - (0.4 + 0.6 * libm::powf(across, 0.8)) * pace).clamp(0.0, 1.0);
-    let moving = if run > 0.5 { kicker.velocity / run } else { dir };
-    let lagged = dir.lerp(moving, 0.8 * difficulty);
+    let pace = 1.0 - ((run - DRIBBLE_SPEED).abs() / 4.0).min(1.0);
+    let force = ease(1.0 - ((speed - 30.0) / 70.0).clamp(0.0, 1.0), 1.0);
+    let easiness = (0.4 + 0.6 * across) * (0.7 + 0.3 * pace) * (0.6 + 0.4 * force);
+    let difficulty = (1.0 - easiness).clamp(0.0, 1.0);
+    let lagged = dir.lerp(touch, 0.8 * difficulty).normalize_or(dir);
     let worst_dir = Vec3::new(
         lagged.x + rng.noise(0.5 * difficulty),
         lagged.y + rng.noise(0.5 * difficulty),
-        0.7 * libm::powf(difficulty, 0.7) + rng.noise(0.5 * difficulty),
+        rng.noise(0.5 * difficulty),
     )
     .normalize_or(dir.extend(0.0));
-    let worst = worst_dir * speed * (1.0 - 0.5 * libm::powf(difficulty, 0.7));
+    let lift = 0.7 * ease(libm::powf(difficulty, 0.7), 0.7);
+    let worst =
+        (worst_dir + Vec3::Z * lift).normalize_or(dir.extend(0.0)) * speed * (1.0 - 0.5 * libm::powf(difficulty, 0.7));
     let w = libm::powf(rng.unit(), 0.7 * accuracy.max(0.05));
     let mut v = best.lerp(worst, w);
     v.z = v.z.max(0.0);
@@ -313,16 +346,63 @@ mod tests {
         let speed = |run: f32, power: f32| {
             let mut shooter = player(Side::Left, 1, Vec2::new(20.0, 0.0));
             shooter.facing = Vec2::X;
-            shooter.velocity = Vec2::new(run, 0.0);
+            shooter.kick_run = Vec2::new(run, 0.0);
             let mut rng = MatchRng::new(3, 1, false);
             shot_velocity(&shooter, Vec2::X, 32.5, &kick(power), 1.0, &mut rng).length()
         };
-        // GRF (measured): a one-step press (power 0.15) by a standing CB leaves at about 26 m/s.
+        // GRF (measured): a one-step press (power 0.15) by a standing CB facing goal leaves at
+        // 24-27.5 m/s (mean 26); GRF's ideal body is turned 36° off the shot, so square on he
+        // loses 3 %.
         let standing = speed(0.0, 0.15);
-        assert!((standing - 25.7).abs() < 0.5, "{standing}");
-        // At a sprint he loses nothing of the 36.7 m/s; full power reaches the 45 m/s cap.
-        assert!((speed(8.0, 0.15) - 36.7).abs() < 0.5);
-        assert!((speed(8.0, 1.0) - 45.0).abs() < 0.5);
+        assert!((standing - 25.0).abs() < 0.5, "{standing}");
+        assert!((speed(8.0, 0.15) - 0.972 * 36.7).abs() < 0.5);
+        assert!((speed(8.0, 1.0) - 0.972 * 45.0).abs() < 0.5);
+        // Sprinting 20° off the shot's line, his body turns GRF's ideal 36° at the touch: he
+        // loses nothing of the 36.7 m/s, and full power reaches the 45 m/s cap.
+        let ideal = |power: f32| {
+            let mut shooter = player(Side::Left, 1, Vec2::new(20.0, 0.0));
+            let a = 0.2 * std::f32::consts::PI / SHOT_TURN;
+            shooter.kick_run = Vec2::new(libm::cosf(a), libm::sinf(a)) * 8.0;
+            let mut rng = MatchRng::new(3, 1, false);
+            shot_velocity(&shooter, Vec2::X, 32.5, &kick(power), 1.0, &mut rng).length()
+        };
+        assert!((ideal(0.15) - 36.7).abs() < 0.1 && (ideal(1.0) - 45.0).abs() < 0.1);
+    }
+
+    #[test]
+    fn a_shot_hit_across_the_run_is_weaker_and_wilder_than_one_along_it() {
+        // GRF 2.10 (measured): after 4 steps' run, a shot along the run scores 20/20 from 14 m;
+        // across it (90° off) 0/20, slower and wide of the post.
+        use crate::geometry::Side;
+        let kick = Kick {
+            kind: KickKind::Shot,
+            target: super::super::KickTarget::Direction(Vec2::X),
+            height: 0.6,
+            power: 0.15,
+        };
+        let shots = |run: Vec2| -> Vec<Vec3> {
+            let mut shooter = player(Side::Left, 1, Vec2::new(40.0, 0.0));
+            shooter.kick_run = run;
+            shooter.facing = run.normalize();
+            let mut rng = MatchRng::new(5, 1, true);
+            (0..200).map(|_| shot_velocity(&shooter, Vec2::X, 14.0, &kick, 0.65, &mut rng)).collect()
+        };
+        // Where each crosses the goal line, 14 m on: |y| and height (m), ignoring gravity and drag.
+        let on_target = |v: &Vec3| {
+            let t = 14.0 / v.x.max(1e-3);
+            (v.y * t).abs() < GOAL_HALF_WIDTH && 0.11 + v.z * t < 2.44
+        };
+        let along = shots(Vec2::new(4.0, 0.0));
+        let across = shots(Vec2::new(0.0, -4.0));
+        let mean_speed = |s: &[Vec3]| s.iter().map(|v| v.length()).sum::<f32>() / s.len() as f32;
+        assert!(mean_speed(&across) < 0.9 * mean_speed(&along));
+        let hits = |s: &[Vec3]| s.iter().filter(|v| on_target(v)).count();
+        assert!(hits(&along) > 150, "{} of 200 along the run", hits(&along));
+        assert!(hits(&across) < hits(&along) / 2, "{} of 200 across the run", hits(&across));
+        // Dragged towards the run: across a run to -y the misses go wide on that side.
+        let wide = across.iter().filter(|v| v.y * 14.0 / v.x.max(1e-3) < -GOAL_HALF_WIDTH).count();
+        let other = across.iter().filter(|v| v.y * 14.0 / v.x.max(1e-3) > GOAL_HALF_WIDTH).count();
+        assert!(wide > 2 * other, "{wide} wide on the run's side, {other} on the other");
     }
 
     #[test]

@@ -376,6 +376,7 @@ impl Match {
         {
             // A first-time kick: the touch is the kick; he never has the ball at his feet.
             self.inputs[g].first_time = None;
+            self.players[g].kick_run = self.players[g].velocity;
             self.execute_kick(g, kick);
             return;
         }
@@ -383,6 +384,7 @@ impl Match {
             && !keeper_hands
         {
             // An agent's shot asked for before he had the ball: struck at the first touch.
+            self.players[g].kick_run = self.players[g].velocity;
             self.execute_kick(g, kick);
             return;
         }

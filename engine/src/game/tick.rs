@@ -157,6 +157,7 @@ impl Match {
                 if self.owner == Some(g) && self.players[g].pending_kick.is_none() {
                     let ticks = self.wind_up_ticks(g, &kick);
                     self.players[g].pending_kick = Some((kick, ticks));
+                    self.players[g].kick_run = self.players[g].velocity;
                 } else if self.owner.is_none() && self.agent_driven[g] && self.at_loose_ball(g) {
                     // GRF's buttons at a loose ball not yet his: a shot waits for his first
                     // touch, a pass fails and holds him for 3.5 s (measured, GRF 2.10).
@@ -278,6 +279,7 @@ impl Match {
         let p = &mut self.players[g];
         p.touch_cooldown = KICK_COOLDOWN;
         p.pending_kick = None;
+        p.kick_run = Vec2::ZERO;
         self.unreachable_ticks = REACTION_TICKS;
         let index = p.index;
         self.owner = None;

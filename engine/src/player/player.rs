@@ -48,6 +48,10 @@ pub struct Player {
     /// A kick being wound up by the player on the ball, and the ticks until the ball leaves his
     /// foot (it never does if he loses the ball first).
     pub(crate) pending_kick: Option<(Kick, u16)>,
+    /// The run (m/s) he was on when he asked for the kick he is winding up: GRF's kick animations
+    /// carry the body's run into the touch, and a shot hit across that run is the harder one.
+    #[serde(default)]
+    pub(crate) kick_run: Vec2,
     /// An agent's player is stepping to a loose ball by himself (GRF's automatic ball control).
     #[serde(default)]
     pub(crate) controlling_ball: bool,
@@ -92,6 +96,7 @@ impl Player {
             slide_ticks: 0,
             dive_ticks: 0,
             pending_kick: None,
+            kick_run: Vec2::ZERO,
             queued_shot: None,
             control_blocked: 0,
             controlling_ball: false,

@@ -48,7 +48,9 @@ def evaluate(model: PPO, scenario: Path, episodes: int, seed: int) -> tuple[floa
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--scenario", type=Path, default=SCENARIO, help="a .tl or compiled .json file")
+    parser.add_argument(
+        "--scenario", type=Path, default=SCENARIO, help="a .tl or compiled .json file"
+    )
     parser.add_argument("--timesteps", type=int, default=300_000)
     parser.add_argument("--envs", type=int, default=8)
     parser.add_argument("--seed", type=int, default=0)

@@ -84,8 +84,12 @@ def against_builtin(name: str, policy: Policy, episodes: int, seed: int, results
 
 
 def head_to_head(
-    names: tuple[str, str], policies: tuple[Policy, Policy], scenario: str, episodes: int,
-    seed: int, results: Results,
+    names: tuple[str, str],
+    policies: tuple[Policy, Policy],
+    scenario: str,
+    episodes: int,
+    seed: int,
+    results: Results,
 ) -> None:
     """`episodes` matches, the first policy on the left in the even ones, on the right in the odd."""
     env = touchline.parallel_env(

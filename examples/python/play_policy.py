@@ -41,7 +41,9 @@ def main() -> None:
             return random.randrange(19)
         import numpy as np
 
-        action, _ = model.predict(np.asarray(observation, dtype=np.float32), deterministic=not args.stochastic)
+        action, _ = model.predict(
+            np.asarray(observation, dtype=np.float32), deterministic=not args.stochastic
+        )
         return int(action)
 
     try:

@@ -54,7 +54,9 @@ def main() -> None:
             se = [float(r["se_return"]) for r in rows]
             axis.plot(steps, mean, label=run.name)
             axis.fill_between(
-                steps, [m - s for m, s in zip(mean, se)], [m + s for m, s in zip(mean, se)],
+                steps,
+                [m - s for m, s in zip(mean, se)],
+                [m + s for m, s in zip(mean, se)],
                 alpha=0.2,
             )
         axis.set_title(scenario)

@@ -124,7 +124,9 @@ def main() -> None:
     episodes = 0
     for iteration in range(1, iterations + 1):
         # Linear learning-rate annealing, as CleanRL's default.
-        optimizer.param_groups[0]["lr"] = args.learning_rate * (1.0 - (iteration - 1.0) / iterations)
+        optimizer.param_groups[0]["lr"] = args.learning_rate * (
+            1.0 - (iteration - 1.0) / iterations
+        )
         for step in range(args.num_steps):
             global_step += args.num_envs
             observations[step] = next_obs
@@ -147,7 +149,9 @@ def main() -> None:
                 # With the scoring reward an episode's return is its goal difference.
                 writer.add_scalar("charts/episodic_return", returns.mean(), global_step)
                 writer.add_scalar("charts/goal_rate", (returns > 0).mean(), global_step)
-                writer.add_scalar("charts/episodic_length", infos["episode"]["l"][ended].mean(), global_step)
+                writer.add_scalar(
+                    "charts/episodic_length", infos["episode"]["l"][ended].mean(), global_step
+                )
 
         # Generalised advantage estimation, bootstrapped from the value of the next observation.
         with torch.no_grad():
@@ -172,10 +176,14 @@ def main() -> None:
             np.random.shuffle(order)
             for start in range(0, batch_size, minibatch_size):
                 mb = order[start : start + minibatch_size]
-                _, new_log_prob, entropy, new_value = agent.action_and_value(b_obs[mb], b_actions[mb])
+                _, new_log_prob, entropy, new_value = agent.action_and_value(
+                    b_obs[mb], b_actions[mb]
+                )
                 ratio = (new_log_prob - b_log_probs[mb]).exp()
                 mb_advantages = b_advantages[mb]
-                mb_advantages = (mb_advantages - mb_advantages.mean()) / (mb_advantages.std() + 1e-8)
+                mb_advantages = (mb_advantages - mb_advantages.mean()) / (
+                    mb_advantages.std() + 1e-8
+                )
                 policy_loss = torch.max(
                     -mb_advantages * ratio,
                     -mb_advantages * ratio.clamp(1 - args.clip_coef, 1 + args.clip_coef),

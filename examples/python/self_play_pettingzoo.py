@@ -119,12 +119,16 @@ def main() -> None:
     seconds = time.perf_counter() - started
     model.save(out / "model")
     env.close()
-    print(f"trained {model.num_timesteps} agent steps in {seconds:.1f} s; model: {out / 'model.zip'}")
+    print(
+        f"trained {model.num_timesteps} agent steps in {seconds:.1f} s; model: {out / 'model.zip'}"
+    )
     for opponent in ("builtin", "self"):
         mean, se = goal_difference(
             model, args.scenario, args.eval_episodes, args.seed + 10_000, opponent
         )
-        print(f"goal difference per match vs {opponent}: {mean:+.2f} ± {se:.2f} (n={args.eval_episodes})")
+        print(
+            f"goal difference per match vs {opponent}: {mean:+.2f} ± {se:.2f} (n={args.eval_episodes})"
+        )
 
 
 if __name__ == "__main__":

@@ -104,10 +104,14 @@ def main() -> None:
     parser.add_argument("--envs", type=int, default=8)
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--n-steps", type=int, default=512, help="rollout steps per env")
-    parser.add_argument("--eval-every", type=int, default=50_000, help="env steps between evaluations")
+    parser.add_argument(
+        "--eval-every", type=int, default=50_000, help="env steps between evaluations"
+    )
     parser.add_argument("--eval-episodes", type=int, default=50)
     parser.add_argument("--out", type=Path, default=None)
-    parser.add_argument("--device", default="cpu", help="torch device (an MLP trains fastest on cpu)")
+    parser.add_argument(
+        "--device", default="cpu", help="torch device (an MLP trains fastest on cpu)"
+    )
     args = parser.parse_args()
     out = args.out or Path("runs") / f"ppo_{args.scenario}_{args.seed}"
     out.mkdir(parents=True, exist_ok=True)

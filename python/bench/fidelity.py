@@ -234,7 +234,12 @@ def _digits(figure: fs.Figure) -> int:
         return 3
     if figure.name == "loose_share":
         return 3
-    return 1 if figure.kind in ("length", "info") or figure.name in ("width_m", "owned_spell", "loose_spell") else 2
+    return (
+        1
+        if figure.kind in ("length", "info")
+        or figure.name in ("width_m", "owned_spell", "loose_spell")
+        else 2
+    )
 
 
 def format_figure(label: str, figure: fs.Figure) -> str:

@@ -264,9 +264,15 @@ class MatchStats:
             "turnovers": float(self.turnovers),
             "possession": self.owned_steps[0] / owned if owned else float("nan"),
             "width_m": statistics.median(self.widths) if self.widths else float("nan"),
-            "loose_share": self.loose_steps / self.normal_steps if self.normal_steps else float("nan"),
-            "owned_spell": statistics.median(self.owned_spells) if self.owned_spells else float("nan"),
-            "loose_spell": statistics.median(self.loose_spells) if self.loose_spells else float("nan"),
+            "loose_share": self.loose_steps / self.normal_steps
+            if self.normal_steps
+            else float("nan"),
+            "owned_spell": statistics.median(self.owned_spells)
+            if self.owned_spells
+            else float("nan"),
+            "loose_spell": statistics.median(self.loose_spells)
+            if self.loose_spells
+            else float("nan"),
         }
 
 

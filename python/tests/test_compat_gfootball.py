@@ -147,7 +147,10 @@ def test_other_config_options() -> None:
         ({"rewards": "checkpoints"}, "scoring"),
         ({"write_goal_dumps": True}, "logdir is empty"),
         ({"write_full_episode_dumps": True}, "logdir is empty"),
-        ({"write_full_episode_dumps": True, "logdir": "/tmp", "dump_frequency": -1}, "dump_frequency"),
+        (
+            {"write_full_episode_dumps": True, "logdir": "/tmp", "dump_frequency": -1},
+            "dump_frequency",
+        ),
         ({"extra_players": ["bot:right_players=1"]}, "extra_players"),
         ({"representation": "raw", "stacked": True}, "stacked"),
     ],

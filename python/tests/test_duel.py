@@ -15,7 +15,9 @@ from touchline.duel import DuelResult, duel, load_policy, main
 
 
 def test_policy_against_the_builtin_ai_prints_intervals(capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["random", "builtin", "--scenario", "academy_empty_goal_close", "--matches", "3"]) == 0
+    assert (
+        main(["random", "builtin", "--scenario", "academy_empty_goal_close", "--matches", "3"]) == 0
+    )
     out = capsys.readouterr().out
     assert out.count("match ") == 3
     assert "random vs builtin on academy_empty_goal_close" in out
@@ -57,19 +59,37 @@ def test_bad_arguments_exit_2(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["random", "builtin", "--scenario", "no_such_scenario", "--matches", "1"]) == 2
     assert "no_such_scenario" in capsys.readouterr().err
     done = subprocess.run(
-        [sys.executable, "-m", "touchline.duel", "idle", "builtin", "--scenario",
-         "academy_empty_goal_close", "--matches", "1"],
-        capture_output=True, text=True, timeout=120,
+        [
+            sys.executable,
+            "-m",
+            "touchline.duel",
+            "idle",
+            "builtin",
+            "--scenario",
+            "academy_empty_goal_close",
+            "--matches",
+            "1",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
     )
     assert done.returncode == 0 and "idle vs builtin" in done.stdout, done.stderr
 
 
 def test_sb3_models_record_their_value_estimates(tmp_path: Path) -> None:
     sb3 = pytest.importorskip("stable_baselines3")
-    model = sb3.PPO("MlpPolicy", touchline.make("1_vs_1_easy"), n_steps=64, batch_size=32, device="cpu")
+    model = sb3.PPO(
+        "MlpPolicy", touchline.make("1_vs_1_easy"), n_steps=64, batch_size=32, device="cpu"
+    )
     model.save(tmp_path / "model.zip")
-    result = duel(load_policy(str(tmp_path / "model.zip")), None, "academy_empty_goal_close", 1,
-                  record=tmp_path / "replays")
+    result = duel(
+        load_policy(str(tmp_path / "model.zip")),
+        None,
+        "academy_empty_goal_close",
+        1,
+        record=tmp_path / "replays",
+    )
     replay = touchline.Replay(result.replays[0])
     names = list(replay.values)
     assert names[0] == "model.value" and len(names) == 20

@@ -126,7 +126,14 @@ def test_info_and_episode_end(play_until_done) -> None:
         env.reset(seed=seed)
         steps, terminated, truncated, info = play_until_done(env, seed=seed)
         assert terminated != truncated
-        for key in ("score", "steps_left", "game_mode", "score_reward", "checkpoint_reward", "event_reward"):
+        for key in (
+            "score",
+            "steps_left",
+            "game_mode",
+            "score_reward",
+            "checkpoint_reward",
+            "event_reward",
+        ):
             assert key in info
         assert info["steps_left"] == env.game_duration + 1 - steps
         if truncated:

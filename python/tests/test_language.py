@@ -37,7 +37,9 @@ def test_a_tl_file_plays_and_randomises_every_reset(tmp_path) -> None:
 
 def test_a_broken_tl_file_raises_scenario_error_with_the_diagnostics(tmp_path) -> None:
     path = tmp_path / "broken.tl"
-    path.write_text("scenario broken {\n  extends academy\n  team left { GK at (-1, 0) CBB at (0.5, 0) }\n}\n")
+    path.write_text(
+        "scenario broken {\n  extends academy\n  team left { GK at (-1, 0) CBB at (0.5, 0) }\n}\n"
+    )
     with pytest.raises(touchline.ScenarioError) as caught:
         touchline.make(str(path))
     message = str(caught.value)

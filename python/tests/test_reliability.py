@@ -41,7 +41,9 @@ def test_deep_nesting_raises(tmp_path: pathlib.Path, body: str) -> None:
 
 
 def test_a_label_past_column_65535_raises_the_diagnostic(tmp_path: pathlib.Path) -> None:
-    text = "scenario s { extends academy_empty_goal_close " + " " * 100_000 + " game_duraton 400 }\n"
+    text = (
+        "scenario s { extends academy_empty_goal_close " + " " * 100_000 + " game_duraton 400 }\n"
+    )
     with pytest.raises(touchline.ScenarioError, match="game_duraton") as caught:
         touchline.make(_scenario(tmp_path, "long.tl", text))
     assert caught.value.code == "tl::E101"

@@ -43,9 +43,13 @@ def test_pixels_show_the_match_in_the_controllers_frame() -> None:
     expected = (4899 * r + 9617 * g + 1868 * b + 8192) >> 14
     np.testing.assert_array_equal(gray[..., 0], expected.astype(np.uint8))
     # A right-team controller sees itself in red too, attacking to the right.
-    env = touchline.make("academy_3_vs_1_with_keeper", representation="pixels",
-                         number_of_left_players_agent_controls=1,
-                         number_of_right_players_agent_controls=1, seed=0)
+    env = touchline.make(
+        "academy_3_vs_1_with_keeper",
+        representation="pixels",
+        number_of_left_players_agent_controls=1,
+        number_of_right_players_agent_controls=1,
+        seed=0,
+    )
     both, _ = env.reset(seed=0)
     assert both.shape == (2, 72, 96, 3)
     # Three attackers against one defender (goalkeepers wear their own colours): the left
@@ -55,7 +59,9 @@ def test_pixels_show_the_match_in_the_controllers_frame() -> None:
 
 
 def test_pixels_stack_and_resize() -> None:
-    env = touchline.make(DRILL, representation="pixels", stacked=True, channel_dimensions=(160, 120), seed=1)
+    env = touchline.make(
+        DRILL, representation="pixels", stacked=True, channel_dimensions=(160, 120), seed=1
+    )
     obs, _ = env.reset()
     assert obs.shape == (120, 160, 12)
     # Reset fills the stack with copies of the first frame (grf.md §4.4).
@@ -91,7 +97,11 @@ def test_render_rgb_array() -> None:
     later = env.render()
     assert later is not None and not np.array_equal(first, later)
     # Gymnasium's checker, render check included.
-    check_env(gymnasium.make(f"touchline/{DRILL}-v0", representation="pixels", render_mode="rgb_array").unwrapped)
+    check_env(
+        gymnasium.make(
+            f"touchline/{DRILL}-v0", representation="pixels", render_mode="rgb_array"
+        ).unwrapped
+    )
 
 
 def test_render_from_the_extension_and_compat() -> None:
@@ -109,8 +119,11 @@ def test_render_from_the_extension_and_compat() -> None:
 
 
 def test_pettingzoo_render() -> None:
-    env = touchline.parallel_env("academy_3_vs_1_with_keeper", render_mode="rgb_array",
-                                 number_of_left_players_agent_controls=2)
+    env = touchline.parallel_env(
+        "academy_3_vs_1_with_keeper",
+        render_mode="rgb_array",
+        number_of_left_players_agent_controls=2,
+    )
     env.reset(seed=0)
     frame = env.render()
     assert frame is not None and frame.shape == (720, 1280, 3)

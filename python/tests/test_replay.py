@@ -189,7 +189,9 @@ def test_replays_draw_into_gif_and_png_frames(tmp_path: Path) -> None:
     assert (tmp_path / "ep.gif").read_bytes()[:6] == b"GIF89a"
     assert replay.write_video(tmp_path / "frames", width=32, height=18, every=3) == 3
     assert sorted(p.name for p in (tmp_path / "frames").iterdir()) == [
-        "frame_00000.png", "frame_00001.png", "frame_00002.png"
+        "frame_00000.png",
+        "frame_00001.png",
+        "frame_00002.png",
     ]
     with pytest.raises(ValueError, match="16 to 8192"):
         replay.write_video(tmp_path / "x.gif", width=8)

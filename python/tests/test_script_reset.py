@@ -37,7 +37,9 @@ def _play_out(env) -> None:
         done = terminated or truncated
 
 
-def test_a_failing_reset_hook_raises_from_reset_once_and_the_env_moves_on(tmp_path: pathlib.Path) -> None:
+def test_a_failing_reset_hook_raises_from_reset_once_and_the_env_moves_on(
+    tmp_path: pathlib.Path,
+) -> None:
     env = _make(tmp_path)
     env.reset(seed=0)
     failures = []
@@ -88,7 +90,9 @@ FIRST = 'fn reset(s) { throw "never" }\nfn reward(s) { 0.0 }\n'
     ],
     ids=["make", "vector", "parallel_env"],
 )
-def test_a_reset_hook_failing_at_the_first_reset_carries_its_code(tmp_path: pathlib.Path, make) -> None:
+def test_a_reset_hook_failing_at_the_first_reset_carries_its_code(
+    tmp_path: pathlib.Path, make
+) -> None:
     """Issue 18: the first reset's error is a `ScenarioError` with `.code`, as a compile error is."""
     (tmp_path / "r.rhai").write_text(FIRST)
     path = tmp_path / "failing_reset.tl"

@@ -65,7 +65,12 @@ def test_bad_state_bytes_raise_value_error() -> None:
     env = touchline.make("academy_corner", seed=0)
     env.reset(seed=0)
     state = env.unwrapped.get_state()
-    for bad in (b"", b"nonsense", state[: len(state) // 2], state[:40] + bytes([state[40] ^ 1]) + state[41:]):
+    for bad in (
+        b"",
+        b"nonsense",
+        state[: len(state) // 2],
+        state[:40] + bytes([state[40] ^ 1]) + state[41:],
+    ):
         with pytest.raises(ValueError):
             env.unwrapped.set_state(bad)
     other = touchline.make("academy_empty_goal", seed=0)

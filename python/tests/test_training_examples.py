@@ -41,8 +41,18 @@ def test_train_sb3_ppo(tmp_path: Path) -> None:
     out = tmp_path / "run"
     stdout = run(
         "train_sb3_ppo.py",
-        "--timesteps", "2048", "--envs", "2", "--n-steps", "256",
-        "--eval-every", "1024", "--eval-episodes", "2", "--out", str(out),
+        "--timesteps",
+        "2048",
+        "--envs",
+        "2",
+        "--n-steps",
+        "256",
+        "--eval-every",
+        "1024",
+        "--eval-episodes",
+        "2",
+        "--out",
+        str(out),
         cwd=tmp_path,
     )
     assert "env steps/s" in stdout and "% in the env" in stdout
@@ -76,8 +86,14 @@ def test_ppo_vector(tmp_path: Path) -> None:
     pytest.importorskip("tensorboard")
     stdout = run(
         "ppo_vector.py",
-        "--total-timesteps", "2048", "--num-envs", "4", "--num-steps", "128",
-        "--out", str(tmp_path / "runs"),
+        "--total-timesteps",
+        "2048",
+        "--num-envs",
+        "4",
+        "--num-steps",
+        "128",
+        "--out",
+        str(tmp_path / "runs"),
         cwd=tmp_path,
     )
     assert "2048 steps" in stdout and "env steps/s" in stdout
@@ -90,8 +106,16 @@ def test_self_play_pettingzoo(tmp_path: Path) -> None:
     out = tmp_path / "run"
     stdout = run(
         "self_play_pettingzoo.py",
-        "--timesteps", "1024", "--matches", "2", "--n-steps", "128", "--eval-episodes", "1",
-        "--out", str(out),
+        "--timesteps",
+        "1024",
+        "--matches",
+        "2",
+        "--n-steps",
+        "128",
+        "--eval-episodes",
+        "1",
+        "--out",
+        str(out),
         cwd=tmp_path,
     )
     assert "goal difference per match vs builtin" in stdout
@@ -104,7 +128,14 @@ def test_custom_reward(tmp_path: Path) -> None:
     pytest.importorskip("stable_baselines3")
     stdout = run(
         "custom_reward.py",
-        "--timesteps", "1024", "--envs", "2", "--eval-episodes", "1", "--out", str(tmp_path),
+        "--timesteps",
+        "1024",
+        "--envs",
+        "2",
+        "--eval-episodes",
+        "1",
+        "--out",
+        str(tmp_path),
         cwd=tmp_path,
     )
     assert "run_to_score_shaped.tl: goal rate" in stdout

@@ -136,7 +136,7 @@ def test_a_script_edit_is_picked_up_too(tmp_path: pathlib.Path) -> None:
     (tmp_path / "r.rhai").write_text("fn reward(s) { 0.25 }\n")
     path = tmp_path / "drill.tl"
     path.write_text(
-        "scenario scripted {\n  extends academy_empty_goal_close\n  reward script \"r.rhai\"\n}\n"
+        'scenario scripted {\n  extends academy_empty_goal_close\n  reward script "r.rhai"\n}\n'
     )
     env = touchline.make(path, watch=True, seed=0)
     env.reset()

@@ -95,10 +95,10 @@ class Env:
         """Shape of one controller's observation ((115,), (72, 96, 4), ... ; () for raw)."""
     @property
     def observation_dtype(self) -> str:
-        """"float32", "uint8" or "raw"."""
+        """ "float32", "uint8" or "raw"."""
     @property
     def controller_sides(self) -> list[str]:
-        """"left" or "right" for each controller."""
+        """ "left" or "right" for each controller."""
     @property
     def scenario_name(self) -> str: ...
     @property
@@ -115,7 +115,9 @@ class Env:
         do not load, versions the env refused), oldest first; empty without `watch`."""
     def reset(self, seed: int | None = None) -> Any:
         """Starts an episode; returns the observation (array (M, *shape) or, for raw, a list of dicts)."""
-    def step(self, actions: npt.ArrayLike) -> tuple[Any, npt.NDArray[np.float32], bool, bool, dict[str, Any]]:
+    def step(
+        self, actions: npt.ArrayLike
+    ) -> tuple[Any, npt.NDArray[np.float32], bool, bool, dict[str, Any]]:
         """One step with one action index per controller.
 
         Returns:
@@ -232,7 +234,13 @@ class Replay:
     def values(self) -> dict[str, npt.NDArray[np.float32]]:
         """The recorder's per-step values: name -> float32 (steps,), NaN where none was given."""
     def write_video(
-        self, path: str | os.PathLike[str], *, width: int = 640, height: int = 360, every: int = 1, fps: int = 10
+        self,
+        path: str | os.PathLike[str],
+        *,
+        width: int = 640,
+        height: int = 360,
+        every: int = 1,
+        fps: int = 10,
     ) -> int:
         """Draws the replay (its stored frames) into `path`: `NAME.gif`, `NAME.mp4` (needs
         `ffmpeg` on the PATH) or a folder of PNG frames; `every`th step, `fps` frames per second.

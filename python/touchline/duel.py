@@ -188,7 +188,11 @@ def duel(
             replay = info.get("replay_path")
         else:
             on_left = k % 2 == 0
-            players = {"left_0": first, "right_0": second} if on_left else {"left_0": second, "right_0": first}
+            players = (
+                {"left_0": first, "right_0": second}
+                if on_left
+                else {"left_0": second, "right_0": first}
+            )
             observations, infos = env.reset(seed=seed + k)
             while env.agents:
                 actions = {}

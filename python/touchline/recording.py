@@ -74,7 +74,9 @@ class ReplayRecording:
                         f"got shape {array.shape} of {array.dtype}"
                     )
                 actions = self._core.action_names
-                labels = actions if len(array) == len(actions) else [str(i) for i in range(len(array))]
+                labels = (
+                    actions if len(array) == len(actions) else [str(i) for i in range(len(array))]
+                )
                 for label, element in zip(labels, array):
                     checked[f"{name}[{label}]"] = _real(f"{name}[{label}]", element)
             else:

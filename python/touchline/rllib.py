@@ -35,7 +35,14 @@ from ray.tune.registry import register_env
 from .gymnasium_env import FootballEnv
 from .make import parallel_env
 
-__all__ = ["MULTI_AGENT", "SINGLE_AGENT", "multi_agent_env", "ppo_config", "register", "single_agent_env"]
+__all__ = [
+    "MULTI_AGENT",
+    "SINGLE_AGENT",
+    "multi_agent_env",
+    "ppo_config",
+    "register",
+    "single_agent_env",
+]
 
 #: Ray registry name of the single-agent env.
 SINGLE_AGENT = "touchline"

@@ -73,7 +73,9 @@ class FootballEnv:
     reward_range = (-float("inf"), float("inf"))
     spec = None
 
-    def __init__(self, core: _CoreEnv, representation: str, dumps: DumpWriter | None = None) -> None:
+    def __init__(
+        self, core: _CoreEnv, representation: str, dumps: DumpWriter | None = None
+    ) -> None:
         self._core = core
         self._dumps = dumps
         self._representation = representation
@@ -243,7 +245,11 @@ def create_environment(
             "dumps are on (write_full_episode_dumps or write_goal_dumps) but logdir is empty: "
             "pass the folder to write them in, e.g. logdir='/tmp/dumps'"
         )
-    if isinstance(dump_frequency, bool) or not isinstance(dump_frequency, int) or dump_frequency < 0:
+    if (
+        isinstance(dump_frequency, bool)
+        or not isinstance(dump_frequency, int)
+        or dump_frequency < 0
+    ):
         raise ValueError(f"dump_frequency must be a non-negative integer, got {dump_frequency!r}")
     if extra_players:
         raise ValueError(

@@ -60,7 +60,9 @@ class Results:
     matches: list[tuple[str, str, int, int]] = field(default_factory=list)
 
     def goal_differences(self, left: str, right: str) -> np.ndarray:
-        return np.array([a - b for l, r, a, b in self.matches if (l, r) == (left, right)], float)
+        return np.array(
+            [a - b for home, away, a, b in self.matches if (home, away) == (left, right)], float
+        )
 
 
 def against_builtin(name: str, policy: Policy, episodes: int, seed: int, results: Results) -> None:
@@ -121,7 +123,7 @@ def elo(results: Results, anchor: str = "builtin_medium") -> dict[str, tuple[flo
     A draw counts as half a win for each side. A small prior (one draw against a virtual player
     rated as the mean) keeps unbeaten or winless players finite.
     """
-    players = sorted({p for l, r, _, _ in results.matches for p in (l, r)})
+    players = sorted({p for home, away, _, _ in results.matches for p in (home, away)})
     index = {p: i for i, p in enumerate(players)}
     n = len(players)
     scale = 400.0 / np.log(10.0)

@@ -104,8 +104,10 @@ def main() -> None:
             autoreset_mode="SameStep",
         )
     )
+    assert envs.single_observation_space.shape is not None
+    assert isinstance(envs.single_action_space, gymnasium.spaces.Discrete)
     observation_size = envs.single_observation_space.shape[0]
-    agent = Agent(observation_size, envs.single_action_space.n)
+    agent = Agent(observation_size, int(envs.single_action_space.n))
     optimizer = torch.optim.Adam(agent.parameters(), lr=args.learning_rate, eps=1e-5)
 
     observations = torch.zeros((args.num_steps, args.num_envs, observation_size))

@@ -56,7 +56,7 @@ class EnvClock(VecEnvWrapper):
 
     def reset(self) -> np.ndarray:
         started = time.perf_counter()
-        observations = self.venv.reset()
+        observations: np.ndarray = self.venv.reset()
         self.seconds += time.perf_counter() - started
         return observations
 

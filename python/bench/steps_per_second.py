@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import argparse
 import time
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 import touchline
@@ -63,7 +65,7 @@ def time_vector(
     return time.perf_counter() - start
 
 
-def best_of(repeats: int, run, *args) -> float:
+def best_of(repeats: int, run: Callable[..., float], *args: Any) -> float:
     """The fastest of `repeats` runs (the least disturbed by other work on the machine)."""
     return min(run(*args) for _ in range(repeats))
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import gymnasium
 import numpy as np
 import pytest
 import touchline
@@ -59,6 +60,7 @@ def test_default_representation_is_smm() -> None:
     env = create_environment(env_name="academy_empty_goal_close")
     obs = env.reset()
     assert obs.shape == (72, 96, 4) and obs.dtype == np.uint8
+    assert env.observation_space is not None
     assert env.observation_space.shape == (72, 96, 4)
     assert obs.max() == 255  # marked pixels are 255 (grf.md §4.2)
     obs, *_ = env.step(0)
@@ -78,13 +80,13 @@ def test_raw_is_a_list_of_dicts_with_grf_keys() -> None:
     env = create_environment(env_name="academy_empty_goal_close", representation="raw")
     obs = env.reset()
     assert isinstance(obs, list) and len(obs) == 1
-    assert GRF_RAW_KEYS <= set(obs[0])
+    assert set(obs[0]) >= GRF_RAW_KEYS
     assert obs[0]["ball"].shape == (3,)
     assert obs[0]["left_team"].shape == (2, 2)  # 2 left players in this drill
     assert obs[0]["sticky_actions"].shape == (10,)
     assert obs[0]["steps_left"] == 401
-    obs, reward, done, info = env.step(5)
-    assert isinstance(obs, list) and GRF_RAW_KEYS <= set(obs[0])
+    obs, _reward, _done, _info = env.step(5)
+    assert isinstance(obs, list) and set(obs[0]) >= GRF_RAW_KEYS
     assert env.unwrapped.observation()[0].keys() == obs[0].keys()
 
 
@@ -98,7 +100,7 @@ def test_several_players_keep_the_leading_axis() -> None:
     obs = env.reset()
     assert obs.shape == (3, 115)
     assert env.action_space.shape == (3,)
-    obs, reward, done, info = env.step([0, 0, 0])
+    obs, reward, _done, _info = env.step([0, 0, 0])
     assert reward.shape == (3,) and reward.dtype == np.float32
     assert reward[0] == -reward[2]
     raw = create_environment(
@@ -130,6 +132,7 @@ def test_other_config_options() -> None:
         env_name="ignored",
         other_config_options={"level": "academy_empty_goal", "action_set": "v2", "real_time": True},
     )
+    assert isinstance(env.action_space, gymnasium.spaces.Discrete)
     assert env.action_space.n == 20
     with pytest.raises(ValueError, match="physics_steps_per_frame"):
         create_environment(

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 import pytest
 import touchline
@@ -13,7 +15,7 @@ SCENARIOS = touchline.scenario_names()
 def rollout(env, seed: int, steps: int, action_seed: int = 0) -> list:
     """(observation, reward, terminated, truncated, info) of up to `steps` steps, over episodes."""
     obs, info = env.reset(seed=seed)
-    trace = [(obs.copy(), info)]
+    trace: list[tuple[Any, ...]] = [(obs.copy(), info)]
     env.action_space.seed(action_seed)
     for _ in range(steps):
         obs, reward, terminated, truncated, info = env.step(env.action_space.sample())

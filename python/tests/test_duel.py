@@ -9,7 +9,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
 import touchline
 from touchline.duel import DuelResult, duel, load_policy, main
 
@@ -90,6 +89,7 @@ def test_sb3_models_record_their_value_estimates(tmp_path: Path) -> None:
         1,
         record=tmp_path / "replays",
     )
+    assert result.replays[0] is not None
     replay = touchline.Replay(result.replays[0])
     names = list(replay.values)
     assert names[0] == "model.value" and len(names) == 20

@@ -141,7 +141,7 @@ def test_vector_env_errors() -> None:
         with pytest.raises(ValueError):
             envs.step(actions)
     with pytest.raises(ValueError):
-        envs.reset(seed=[1, 2, 3])
+        envs.reset(seed=[1, 2, 3])  # type: ignore[arg-type]  # the wrong type is the test
     with pytest.raises(ValueError):
         touchline.vector.make(DRILL, num_envs=0)
     with pytest.raises(ValueError):

@@ -48,9 +48,9 @@ def test_registered_ids_make_and_pass_check_env() -> None:
     for name in SCENARIOS:
         assert f"touchline/{name}-v0" in gymnasium.registry
     env = gymnasium.make("touchline/academy_empty_goal-v0")
-    obs, info = env.reset(seed=0)
+    obs, _info = env.reset(seed=0)
     assert obs.shape == (115,) and obs.dtype == np.float32
-    obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+    obs, reward, _terminated, _truncated, _info = env.step(env.action_space.sample())
     assert isinstance(reward, float)
     check_env(env.unwrapped, skip_render_check=True)
     env.close()
@@ -118,7 +118,7 @@ def test_several_players_reward_is_the_mean_and_info_has_the_vector() -> None:
 
 def test_info_and_episode_end(play_until_done) -> None:
     env = touchline.make(DRILL)
-    obs, info = env.reset(seed=0)
+    _obs, info = env.reset(seed=0)
     assert info["score"] == [0, 0]
     assert info["steps_left"] == env.game_duration + 1
     assert info["game_mode"] in range(7)
@@ -191,7 +191,7 @@ def test_record_episode_statistics_around_a_gymnasium_vector_env() -> None:
     envs.reset(seed=0)
     finished = 0
     for _ in range(400):
-        _, _, terminated, truncated, infos = envs.step(envs.action_space.sample())
+        _, _, _terminated, _truncated, infos = envs.step(envs.action_space.sample())
         if "episode" in infos:
             finished += int(infos["_episode"].sum())
         if finished >= 2:

@@ -6,8 +6,12 @@ import numpy as np
 import pytest
 import touchline
 from gymnasium import spaces
-from pettingzoo.test import parallel_api_test, parallel_seed_test, seed_test
-from pettingzoo.utils import parallel_to_aec
+from pettingzoo.test import (  # type: ignore[import-untyped]
+    parallel_api_test,
+    parallel_seed_test,
+    seed_test,
+)
+from pettingzoo.utils import parallel_to_aec  # type: ignore[import-untyped]
 
 DUEL = "1_vs_1_easy"  # a symmetric 1 + 1 match: one keeper a side, 501 steps
 

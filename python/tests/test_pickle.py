@@ -25,7 +25,7 @@ def test_the_extension_env_pickles_with_its_episode() -> None:
 def test_the_pettingzoo_env_pickles() -> None:
     env = touchline.parallel_env(DRILL, seed=1)
     env.reset(seed=1)
-    actions = {agent: 5 for agent in env.agents}
+    actions = dict.fromkeys(env.agents, 5)
     env.step(actions)
     copy = pickle.loads(pickle.dumps(env))
     assert copy.agents == env.agents

@@ -10,7 +10,6 @@ from typing import Any
 
 import numpy as np
 import pytest
-
 import touchline
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

@@ -12,9 +12,9 @@ import pytest
 
 pytest.importorskip("ray.rllib")
 
-import ray  # noqa: E402
-from ray.rllib.env.env_context import EnvContext  # noqa: E402
-from touchline import rllib  # noqa: E402
+import ray
+from ray.rllib.env.env_context import EnvContext
+from touchline import rllib
 
 
 def test_single_agent_env_is_touchline_make() -> None:

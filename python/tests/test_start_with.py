@@ -21,7 +21,7 @@ def test_the_penalty_drill_starts_in_the_penalty_game_mode() -> None:
     terminated = truncated = False
     steps = 0
     while not (terminated or truncated):
-        _, reward, terminated, truncated, _ = env.step(SHOT)
+        _, _reward, terminated, truncated, _ = env.step(SHOT)
         steps += 1
     assert terminated and steps <= 40, (steps, terminated)
 

@@ -68,9 +68,8 @@ def test_sb3_ppo_trains_10k_steps_through_make_vec_env_with_no_wrapper() -> None
     # The first training run a new user tries (issue 16): SB3's make_vec_env on the registered id,
     # nothing else. Its Monitor reads info["episode"], which touchline leaves free.
     sb3 = pytest.importorskip("stable_baselines3")
-    from stable_baselines3.common.env_util import make_vec_env
-
     import touchline  # noqa: F401  (registers the touchline/ ids)
+    from stable_baselines3.common.env_util import make_vec_env
 
     envs = make_vec_env("touchline/academy_empty_goal_close-v0", n_envs=2, seed=0)
     model = sb3.PPO("MlpPolicy", envs, n_steps=512, batch_size=256, seed=0, device="cpu")

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import functools
+from typing import Any
+
 import gymnasium
 import numpy as np
 import pytest
@@ -31,10 +34,10 @@ def test_spaces_and_metadata() -> None:
     assert terminated.shape == truncated.shape == (4,) and terminated.dtype == np.bool_
 
 
-def _sync_envs(n: int, seed: int, mode: AutoresetMode, **kwargs: object) -> SyncVectorEnv:
+def _sync_envs(n: int, seed: int, mode: AutoresetMode, **kwargs: Any) -> SyncVectorEnv:
     """Gymnasium's reference vector env over `n` single envs, env i seeded with seed + i."""
     return SyncVectorEnv(
-        [lambda i=i: touchline.make(DRILL, seed=seed + i, **kwargs) for i in range(n)],
+        [functools.partial(touchline.make, DRILL, seed=seed + i, **kwargs) for i in range(n)],
         autoreset_mode=mode,
     )
 
@@ -143,7 +146,7 @@ def test_thread_counts_agree() -> None:
         rng = np.random.default_rng(1)
         trace = []
         for _ in range(50):
-            obs, rewards, terminated, truncated, _ = envs.step(rng.integers(19, size=4))
+            obs, _rewards, _terminated, _truncated, _ = envs.step(rng.integers(19, size=4))
             trace.append(obs.copy())
         results.append(np.stack(trace))
     for other in results[1:]:

@@ -152,7 +152,6 @@ class Env:
         """
     def __getnewargs_ex__(self) -> tuple[tuple[str], dict[str, Any]]:
         """Pickling: the constructor's arguments (with `__getstate__`, the episode's state)."""
-        ...
     def __getstate__(self) -> bytes: ...
     def __setstate__(self, state: bytes) -> None: ...
     @property
@@ -300,20 +299,16 @@ class VectorEnv:
     def observation_dtype(self) -> str: ...
     def get_states(self) -> list[bytes]:
         """Every match's whole state, in match order (for pickling)."""
-        ...
     def ended(self) -> list[bool]:
         """Which matches ended on their last step and wait for their reset (NextStep, Disabled)."""
-        ...
     def set_states(self, states: list[bytes], ended: list[bool] | None = None) -> None:
         """Restores `get_states` (and `ended`) of a vector env built with the same arguments.
 
         Raises:
             ValueError: another number of states or flags, or bytes `Env.set_state` refuses.
         """
-        ...
     def infos(self, current: npt.NDArray[np.float64], finals: npt.NDArray[np.float64]) -> None:
         """Writes each match's info row (13 float64 columns), now and at its last episode's end."""
-        ...
     def reset(
         self,
         observations: npt.NDArray[Any],

@@ -10,8 +10,8 @@ import numpy as np
 from gymnasium import spaces
 
 from . import _arguments
-from .recording import ReplayRecording
 from ._touchline import Env as _CoreEnv
+from .recording import ReplayRecording
 
 
 def reset_info(core: _CoreEnv) -> dict[str, Any]:
@@ -120,7 +120,7 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
     * v0: first version.
     """
 
-    metadata: dict[str, Any] = {"render_modes": ["rgb_array"], "render_fps": 10}
+    metadata: dict[str, Any] = {"render_modes": ["rgb_array"], "render_fps": 10}  # noqa: RUF012 (the base class declares it so)
 
     def __init__(
         self,
@@ -212,6 +212,12 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
     def __setstate__(self, saved: dict[str, Any]) -> None:
         self.__init__(**saved["args"])  # type: ignore[misc]
         self._core.set_state(saved["state"])
+
+    @property
+    def unwrapped(self) -> FootballEnv:
+        """This env: it wraps nothing. Typed as `FootballEnv`, so that
+        `gymnasium.make("touchline/...").unwrapped.get_state()` type-checks."""
+        return self
 
     @property
     def scenario_name(self) -> str:

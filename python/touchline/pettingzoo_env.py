@@ -10,8 +10,8 @@ from gymnasium import spaces
 from pettingzoo import ParallelEnv  # type: ignore[import-untyped]
 
 from . import _arguments
-from .recording import ReplayRecording
 from .gymnasium_env import reset_info
+from .recording import ReplayRecording
 
 
 class FootballParallelEnv(ReplayRecording, ParallelEnv[str, np.ndarray, int]):  # type: ignore[misc]
@@ -34,7 +34,7 @@ class FootballParallelEnv(ReplayRecording, ParallelEnv[str, np.ndarray, int]):  
     Build it with `touchline.parallel_env(...)`; the arguments are those of `touchline.make`.
     """
 
-    metadata: dict[str, Any] = {
+    metadata: dict[str, Any] = {  # noqa: RUF012 (the base class declares it so)
         "render_modes": ["rgb_array"],
         "render_fps": 10,
         "name": "touchline_v0",

@@ -69,7 +69,7 @@ class FootballEnv:
         action_space: `Discrete(19)` for one player, `MultiDiscrete([19] * M)` for M players.
     """
 
-    metadata: dict[str, Any] = {"render.modes": []}
+    metadata: dict[str, Any] = {"render.modes": []}  # noqa: RUF012 (the base class declares it so)
     reward_range = (-float("inf"), float("inf"))
     spec = None
 

@@ -51,7 +51,7 @@ enum Command {
     Fmt(cmd::fmt::FmtArgs),
     /// List the stdlib scenarios with their descriptions.
     #[command(alias = "scenarios")]
-    List(cmd::scenarios::ScenariosArgs),
+    List(cmd::list::ListArgs),
     /// Draw a replay into a video (MP4 with ffmpeg, animated GIF, or PNG frames).
     Replay(cmd::replay::ReplayArgs),
     /// Watch replays in the browser: serves a viewer page on localhost, or writes it as one
@@ -271,7 +271,7 @@ fn main() -> ExitCode {
         Command::Check(args) => cmd::check::run(&args),
         Command::Compile(args) => cmd::compile::run(&args),
         Command::Fmt(args) => cmd::fmt::run(&args),
-        Command::List(args) => cmd::scenarios::run(&args),
+        Command::List(args) => cmd::list::run(&args),
         Command::Replay(args) => cmd::replay::run(&args),
         Command::View(args) => cmd::view::run(&args),
         Command::Watch(args) => cmd::watch::run(&args),

@@ -7,7 +7,7 @@ use std::sync::Arc;
 use miette::{LabeledSpan, NamedSource, Severity, SourceSpan};
 
 use crate::excerpt::clip_message;
-use crate::syntax::Span;
+use crate::span::Span;
 
 /// The stable code of a compiler diagnostic (`tl::E1xx` errors, `tl::W1xx` warnings). Codes are
 /// never reused for another problem; grammar/README.md lists them.

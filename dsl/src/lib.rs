@@ -19,15 +19,16 @@
 //! ```
 #![deny(missing_docs)]
 
-mod build;
+mod build_env;
 mod compile;
-mod diag;
 pub mod diagnostic;
 pub mod excerpt;
 mod format;
 mod load;
+mod load_error;
 mod print;
 mod source_file;
+mod span;
 pub mod stdlib;
 mod suggest;
 pub mod syntax;
@@ -37,10 +38,10 @@ pub mod watch;
 
 pub use compile::{Compiled, PRELUDE, check_file, compile, compile_file};
 
-pub use build::{BuildError, attach, build_env, build_env_with, script_dir};
-pub use diag::{JsonError, LoadError, render_plain};
+pub use build_env::{BuildError, attach, build_env, build_env_with, script_dir};
 pub use diagnostic::{Code, Diagnostic, Diagnostics};
 pub use format::format_source;
 pub use load::{load, load_file, load_json};
+pub use load_error::{JsonError, LoadError, render_plain};
 pub use print::scenario_to_tl;
 pub use watch::Watched;

@@ -4,7 +4,7 @@ use std::path::Path;
 
 use touchline_engine::Scenario;
 
-use crate::diag::LoadError;
+use crate::load_error::LoadError;
 use crate::{stdlib, suggest};
 
 /// Loads the scenario `spec` names and checks it with [`Scenario::validate`].

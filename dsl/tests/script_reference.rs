@@ -126,8 +126,8 @@ fn the_property_table_is_the_state() {
 /// The `tl::S…` codes the crate's sources define (`code(tl::S…)` attributes).
 fn script_codes() -> Vec<String> {
     let sources = [
-        include_str!("../src/script/diag.rs"),
-        include_str!("../src/build.rs"),
+        include_str!("../src/script/error.rs"),
+        include_str!("../src/build_env.rs"),
         include_str!("../src/watch.rs"),
         include_str!("../src/script/mod.rs"),
     ];

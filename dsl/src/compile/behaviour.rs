@@ -8,8 +8,8 @@
 use touchline_engine::scenario::{Behaviour, PassKind, Stage, Target};
 use touchline_engine::{Scenario, Side};
 
-use super::check::RIM;
 use super::condition::{self, Context};
+use super::pitch::within_rim;
 use super::value::{Frame, Reader, suggest_help};
 use crate::diagnostic::{Code, Diagnostic};
 use crate::suggest;
@@ -18,11 +18,6 @@ use crate::syntax::{self, Action, Argument, Expr, ExprKind, Span};
 /// The behaviours, for suggestions and help.
 pub(crate) const BEHAVIOURS: [&str; 10] =
     ["idle", "hold_position", "follow", "move_to", "dribble_to", "pass_to", "mark", "press", "builtin", "script"];
-
-/// Whether a point is finite and inside the rim (where a player may start).
-pub(crate) fn on_rim(p: [f32; 2]) -> bool {
-    p.iter().all(|v| v.is_finite()) && p[0].abs() <= RIM[0] && p[1].abs() <= RIM[1]
-}
 
 /// Whether a behaviour finishes by itself (so that the next stage follows without an `until`).
 pub(crate) fn finishes(b: &Behaviour) -> bool {
@@ -282,7 +277,7 @@ fn point(name: &str, args: &[Argument], span: Span, r: &mut Reader<'_>) -> Optio
             return None;
         }
     };
-    if !on_rim(p) {
+    if !within_rim(p) {
         r.error_help(
             Code::OutOfRange,
             format!("`{name}` goes off the pitch, to ({}, {})", super::value::short(p[0]), super::value::short(p[1])),

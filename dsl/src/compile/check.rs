@@ -1,17 +1,16 @@
 //! Checks on the merged scenario: team sizes, goalkeepers, positions on the pitch, `require`
 //! constraints that can hold, and the engine's own validation as a backstop.
 
-use touchline_engine::geometry::coords::{SCENARIO_LINES, SCENARIO_RIM};
+use touchline_engine::geometry::coords::SCENARIO_LINES;
 use touchline_engine::scenario::{MAX_PLACEMENT_TRIES, Spot};
 use touchline_engine::{MAX_PLAYERS_PER_TEAM, Role, Scenario};
 
-use super::body::{Loc, Origins};
+use super::origins::{Loc, Origins};
+use super::pitch::RIM;
 use super::value::short;
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Source};
 use crate::syntax::Span;
 
-/// The rim: the farthest a player or the ball may start, or a behaviour's point may be.
-pub(super) const RIM: [f32; 2] = SCENARIO_RIM;
 /// The lines: |x| ≤ 1, |y| ≤ 0.42.
 const LINES: [f32; 2] = SCENARIO_LINES;
 /// Placements drawn to estimate how often the `require` constraints hold.

@@ -388,7 +388,7 @@ pub(crate) fn target(e: &Expr, ctx: Context, s: &Scenario, r: &mut Reader<'_>, p
         },
         ExprKind::Tuple(_) if point => {
             let p = r.fixed_point(e, ctx.frame())?;
-            if !super::behaviour::on_rim(p) {
+            if !super::pitch::within_rim(p) {
                 r.error_help(
                     Code::OutOfRange,
                     format!("the point ({}, {}) is off the pitch", short(p[0]), short(p[1])),

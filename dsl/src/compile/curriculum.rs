@@ -5,8 +5,8 @@
 use touchline_engine::Scenario;
 use touchline_engine::scenario::{Criterion, Curriculum, EndCondition, Lesson, Metric, RewardKind, Threshold};
 
-use super::body;
 use super::params::{self, Params};
+use super::statements;
 use super::value::{Reader, suggest_help};
 use super::{Compiler, check};
 use crate::diagnostic::{Code, Diagnostic, Source};
@@ -153,7 +153,7 @@ impl Compiler {
             span: l.span,
         };
         let mut reader = Reader::new(source, &mut self.diags, &env);
-        body::apply(&body, &mut scenario, &mut origins, &mut reader);
+        statements::apply(&body, &mut scenario, &mut origins, &mut reader);
         // A lesson's own places can share a draw across axes as a scenario body's can.
         reader.warn_repeated_draws();
         let own = l.statements.iter().find_map(|s| match &s.kind {

@@ -95,7 +95,7 @@ pub(crate) fn reward_on(ro: &RewardOn, r: &mut Reader<'_>) -> Option<RewardTerm>
         ok = false;
     }
     let once = repeat(&ro.repeats, r);
-    let value = super::body::reward_number(r, &ro.value, "a reward value");
+    let value = super::statements::reward_number(r, &ro.value, "a reward value");
     let (once, value) = (once?, value?);
     ok.then_some(RewardTerm { reward: RewardKind::Event(EventReward { sequence, once }), weight: value })
 }

@@ -4,16 +4,17 @@
 //! reported, not just the first.
 
 mod behaviour;
-mod body;
 mod check;
 mod condition;
 mod curriculum;
 mod events;
+mod origins;
 mod params;
 mod pitch;
 mod reindex;
 mod relative;
 mod start;
+mod statements;
 
 pub(crate) use pitch::{BALL_X_METRES, BALL_Y_METRES, PLAYER_X_METRES, PLAYER_Y_METRES};
 pub(crate) use start::restart_name;
@@ -29,7 +30,7 @@ use touchline_engine::Scenario;
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Source};
 use crate::syntax::{self, Definition, Item, Kind, StatementKind};
 use crate::{stdlib, suggest};
-use body::Origins;
+use origins::Origins;
 use params::{Param, Params};
 use value::{Reader, suggest_help};
 
@@ -470,7 +471,7 @@ impl Compiler {
         }
         self.assign_params(&mut env, &assigned, &down, &source, None);
         let mut reader = Reader::new(&source, &mut self.diags, &env);
-        body::apply(&d, &mut scenario, &mut origins, &mut reader);
+        statements::apply(&d, &mut scenario, &mut origins, &mut reader);
         reader.warn_repeated_draws();
         scenario.name = d.name.value.clone();
         scenario.description = description(&d.docs);
@@ -523,7 +524,7 @@ impl Compiler {
                     Some(l) => format!("lesson `{l}` sets `{}`, which is not a param", a.name),
                     None => format!("`{}` is not a param", a.name),
                 };
-                let otherwise = if body::is_key(&a.name) {
+                let otherwise = if statements::is_key(&a.name) {
                     format!("`{}` is a configuration key: write `{} VALUE`, without `=`", a.name, a.name)
                 } else if names.is_empty() {
                     "no param is declared; declare one with `param NAME = VALUE`".to_owned()

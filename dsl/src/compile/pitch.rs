@@ -27,6 +27,14 @@ const GOAL_AREA_DEPTH: f32 = (5.5 / PLAYER_X_METRES) as f32;
 const GOAL_AREA_HALF_WIDTH: f32 = (9.16 / PLAYER_Y_METRES) as f32;
 /// Centre circle radius, 9.15 m (Law 1), in x units.
 const CENTRE_CIRCLE: f32 = (9.15 / PLAYER_X_METRES) as f32;
+/// The rim: the farthest a player or the ball may start, or a behaviour's point may be.
+pub(crate) const RIM: [f32; 2] = SCENARIO_RIM;
+
+/// Whether a point is finite and within the rim (where a player may start).
+pub(crate) fn within_rim(p: [f32; 2]) -> bool {
+    p.iter().all(|v| v.is_finite()) && p[0].abs() <= RIM[0] && p[1].abs() <= RIM[1]
+}
+
 /// Touchline y in scenario units ([`SCENARIO_LINES`]).
 const TOUCHLINE: f32 = SCENARIO_LINES[1];
 

@@ -7,7 +7,7 @@
 use touchline_engine::scenario::{Body, Require, Spot};
 use touchline_engine::{Role, Scenario};
 
-use super::body::{Loc, Origins};
+use super::origins::{Loc, Origins};
 use super::value::Reader;
 use crate::diagnostic::{Code, Diagnostic};
 use crate::syntax::Span;

@@ -150,7 +150,7 @@ fn body_name(b: Body, s: &Scenario) -> String {
 fn anchor(e: &Expr, frame: Frame, s: &Scenario, r: &mut Reader<'_>) -> Option<Anchor> {
     match &e.kind {
         ExprKind::Binary { op, lhs, rhs } => {
-            let of = super::body::body(lhs, s, r);
+            let of = super::statements::body(lhs, s, r);
             let offset = offset(rhs, frame, r);
             let (of, [dx, dy]) = (of?, offset?);
             let sign = if *op == BinaryOp::Sub { -1.0 } else { 1.0 };
@@ -178,7 +178,7 @@ fn anchor(e: &Expr, frame: Frame, s: &Scenario, r: &mut Reader<'_>) -> Option<An
                 let radius = r.metres(&args[1].value);
                 return Some(Anchor { radius: radius?, ..centre? });
             }
-            let of = super::body::body(&args[0].value, s, r);
+            let of = super::statements::body(&args[0].value, s, r);
             let d = signed_metres(&args[1].value, r);
             let (of, d) = (of?, d?);
             let (offset, radius) = match name.value.as_str() {
@@ -198,7 +198,7 @@ fn anchor(e: &Expr, frame: Frame, s: &Scenario, r: &mut Reader<'_>) -> Option<An
             }
             Some(Anchor { of, offset, radius })
         }
-        _ => super::body::body(e, s, r).map(|of| Anchor { of, offset: [0.0, 0.0], radius: 0.0 }),
+        _ => super::statements::body(e, s, r).map(|of| Anchor { of, offset: [0.0, 0.0], radius: 0.0 }),
     }
 }
 

@@ -7,8 +7,8 @@ use rhai::{CallFnOptions, Dynamic, Engine, EvalAltResult, Map, Scope};
 use touchline_engine::{Action, ActionSet, EngineError, HookOutcome, HookView, Hooks, Side};
 
 use super::api::{State, TeamState};
-use super::diag::{self, ScriptError};
 use super::engine::{self, Meter, PrintSink};
+use super::error::{self, ScriptError};
 use super::memory::{self, Value};
 use super::{ErrorPolicy, Role, Script, ScriptSet, base_scope};
 
@@ -146,11 +146,11 @@ impl ScriptHooks {
         let limit =
             matches!(e.unwrap_inner(), EvalAltResult::ErrorTooManyOperations(_) | EvalAltResult::ErrorTerminated(..));
         let span = if !pos.is_none() {
-            diag::span_at(&script.text, pos)
-        } else if let Some(span) = limit.then(|| diag::span_of_first_loop(&script.ast, &script.text, hook)).flatten() {
+            error::span_at(&script.text, pos)
+        } else if let Some(span) = limit.then(|| error::span_of_first_loop(&script.ast, &script.text, hook)).flatten() {
             span
         } else {
-            diag::span_of_fn(&script.text, hook)
+            error::span_of_fn(&script.text, hook)
         };
         ScriptError::Runtime { path: script.path.clone(), hook, step, message, src: script.source(), span, help }
     }
@@ -162,7 +162,7 @@ impl ScriptHooks {
             got: format!("{} `{got}`", got.type_name()),
             expected: expected.to_owned(),
             src: script.source(),
-            span: diag::span_of_fn(&script.text, hook),
+            span: error::span_of_fn(&script.text, hook),
             help: format!(
                 "the value of a function is its last expression, or what `return` gives: every branch of \
                  `fn {hook}` must end in such a value (an `if` without `else` gives `()`)"

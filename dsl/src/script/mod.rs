@@ -60,8 +60,8 @@
 
 mod api;
 mod cost;
-mod diag;
 mod engine;
+mod error;
 mod file;
 mod hooks;
 mod memory;
@@ -78,8 +78,8 @@ use touchline_engine::Scenario;
 use touchline_engine::scenario::{EndCondition, RewardKind};
 
 pub use api::STATE_PROPERTIES;
-pub use diag::ScriptError;
 pub use engine::Limits;
+pub use error::ScriptError;
 pub use file::MAX_SCRIPT_BYTES;
 pub use hooks::ScriptHooks;
 
@@ -329,7 +329,7 @@ fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -
             path: path.to_owned(),
             message: e.err_type().to_string(),
             src: src(),
-            span: diag::span_at(&text, e.position()),
+            span: error::span_at(&text, e.position()),
         })
     };
     let loose = engine::sandboxed(&options.limits, false, &sink, &meter);
@@ -340,12 +340,12 @@ fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -
             path: path.to_owned(),
             name: refusal.name,
             src: src(),
-            span: diag::span_at(&text, refusal.position),
+            span: error::span_at(&text, refusal.position),
             help: refusal.why.to_owned(),
         }));
     }
     if let Some(unknown) = properties::first_unknown(&first) {
-        let at = diag::span_at(&text, unknown.position).offset();
+        let at = error::span_at(&text, unknown.position).offset();
         return Err(Box::new(ScriptError::UnknownProperty {
             path: path.to_owned(),
             help: properties::help(&unknown.name),
@@ -362,7 +362,7 @@ fn compile_text(path: &str, text: String, role: Role, options: &ScriptOptions) -
             path: path.to_owned(),
             message: format!("the top level fails: {}", hooks::failure(&e).0),
             src: src(),
-            span: diag::span_at(&text, e.position()),
+            span: error::span_at(&text, e.position()),
         }));
     }
     let mut constants = Vec::new();

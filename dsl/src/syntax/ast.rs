@@ -1,30 +1,7 @@
 //! The syntax tree of a `.tl` file: what the text says, with a byte span on every part, before
 //! any name or value is checked.
 
-/// A byte range `start..end` in the source text.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Span {
-    /// First byte.
-    pub start: usize,
-    /// One past the last byte.
-    pub end: usize,
-}
-
-impl Span {
-    /// The span from `a`'s start to `b`'s end.
-    pub fn join(a: Span, b: Span) -> Span {
-        Span { start: a.start.min(b.start), end: a.end.max(b.end) }
-    }
-}
-
-/// A value with the span of its text.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Spanned<T> {
-    /// The value.
-    pub value: T,
-    /// Where it is written.
-    pub span: Span,
-}
+pub use crate::span::{Span, Spanned};
 
 /// A parsed file.
 #[derive(Clone, Debug, Default, PartialEq)]

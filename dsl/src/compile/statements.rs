@@ -1,4 +1,7 @@
-//! Applying one definition's statements on top of what it extends.
+//! Applying one definition's statements on top of what it extends, with the checks that need
+//! only the statement itself: settings (unknown keys, values of the wrong type), `team` (unknown
+//! roles and formations, places), `ball`, `require`, `reward`, `end` and `start with`. Checks on
+//! the merged scenario (team sizes, one goalkeeper, positions within the rim) are in `check.rs`.
 
 use std::collections::HashMap;
 
@@ -6,36 +9,12 @@ use touchline_engine::scenario::{Body, EndCondition, Require, RewardKind, Reward
 use touchline_engine::{PlayerEntry, Role, Scenario};
 
 use super::condition::Context;
+use super::origins::{Loc, Origins};
 use super::value::{Frame, Reader, suggest_help};
 use super::{behaviour, condition, pitch};
-use crate::diagnostic::{Code, Diagnostic, Source};
+use crate::diagnostic::{Code, Diagnostic};
 use crate::suggest;
 use crate::syntax::{self, Condition, Definition, Expr, ExprKind, Flag, Span, StatementKind};
-
-/// Where a part of the compiled scenario was written, for diagnostics found after merging.
-#[derive(Clone, Debug)]
-pub(crate) struct Loc {
-    pub(crate) source: Source,
-    pub(crate) span: Span,
-}
-
-/// The places the merged scenario's parts come from.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct Origins {
-    /// The `team` statement of each side.
-    pub(crate) team: [Option<Loc>; 2],
-    /// Each player's line (or the formation), per side.
-    pub(crate) players: [Vec<Loc>; 2],
-    /// The `ball` statement.
-    pub(crate) ball: Option<Loc>,
-    /// Whether each side's `team` statement had errors (an unknown role or formation, a bad
-    /// place): its players are then incomplete, and counting them would only repeat the error.
-    pub(crate) team_errors: [bool; 2],
-    /// Each `require` statement of the merged scenario, in order.
-    pub(crate) requires: Vec<Loc>,
-    /// The `start with` statement.
-    pub(crate) start_with: Option<Loc>,
-}
 
 /// Words that begin a statement (for "is the team block's `}` missing?").
 const STATEMENT_KEYWORDS: [&str; 8] = ["ball", "team", "require", "reward", "end", "on", "extends", "behaviour"];

@@ -9,7 +9,7 @@ use crate::CliError;
 
 /// Arguments of `touchline scenarios`.
 #[derive(Debug, Args)]
-pub(crate) struct ScenariosArgs {
+pub(crate) struct ListArgs {
     /// Print only the names, one a line (for scripts).
     #[arg(long)]
     names: bool,
@@ -20,7 +20,7 @@ pub(crate) struct ScenariosArgs {
 }
 
 /// Runs `touchline list`.
-pub(crate) fn run(args: &ScenariosArgs) -> Result<(), CliError> {
+pub(crate) fn run(args: &ListArgs) -> Result<(), CliError> {
     let mut names: Vec<&str> = touchline_dsl::stdlib::names().to_vec();
     if args.tests {
         names.extend(touchline_dsl::stdlib::test_names());

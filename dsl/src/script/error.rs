@@ -190,7 +190,7 @@ pub(crate) fn offset(text: &str, line: usize, column: usize) -> usize {
     if line == 0 {
         return 0;
     }
-    let Some((start, line_text)) = crate::diag::line_at(text, line) else { return text.len() };
+    let Some((start, line_text)) = crate::load_error::line_at(text, line) else { return text.len() };
     start + line_text.char_indices().nth(column.saturating_sub(1)).map_or(line_text.len(), |(i, _)| i)
 }
 

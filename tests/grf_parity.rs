@@ -1,6 +1,6 @@
-//! Parity with GRF's observed numbers (shared/reference/grf.md §2.2, §2.4, §3.2): every stdlib
-//! scenario, loaded through the dsl as a user would, starts with players and ball where GRF's first
-//! observation has them, and with GRF's steps_left.
+//! Parity with GRF's observed numbers (docs/grf-compatibility.md#scenario-semantics, #scenario-players,
+//! #coordinates): every stdlib scenario, loaded through the dsl as a user would, starts with players and ball
+//! where GRF's first observation has them, and with GRF's steps_left.
 
 use touchline_engine::{Env, EnvConfig};
 
@@ -43,8 +43,8 @@ fn every_stdlib_scenario_starts_where_grf_does() {
 
 #[test]
 fn grf_table_spot_checks() {
-    // grf.md §2.4, academy_corner: left LB (1, 0.42) is observed at (1.0110, 0.4268), right RB
-    // (-1, -0.1) at (1.0110, 0.1016).
+    // docs/grf-compatibility.md#scenario-players, academy_corner: left LB (1, 0.42) is observed at (1.0110,
+    // 0.4268), right RB (-1, -0.1) at (1.0110, 0.1016).
     let env = Env::new(touchline_dsl::load("academy_corner").unwrap(), 0).unwrap();
     let obs = &env.observations()[0];
     assert!((obs.left_team[1][0] - 1.0110).abs() < 1e-4 && (obs.left_team[1][1] - 0.4268).abs() < 1e-4);
@@ -54,7 +54,7 @@ fn grf_table_spot_checks() {
 #[test]
 fn full_matches_swap_formations_on_odd_episodes() {
     // Set A (the kickoff formation, two players 1.7 m from the centre spot) goes left in the first
-    // episode and right in the second (grf.md §2.2).
+    // episode and right in the second (docs/grf-compatibility.md#scenario-semantics).
     let mut env = Env::new(touchline_dsl::load("11_vs_11_stochastic").unwrap(), 0).unwrap();
     let nearest =
         |team: &[[f32; 2]]| team.iter().map(|p| (p[0] * 54.4).hypot(p[1] * 83.6)).fold(f32::INFINITY, f32::min);

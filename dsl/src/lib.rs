@@ -6,11 +6,12 @@
 //! - the **stdlib**, by name (`academy_empty_goal_close`, `11_vs_11_stochastic`, …): the scenarios of
 //!   Google Research Football, embedded in this crate ([`stdlib`]);
 //! - a **compiled scenario**, a `.json` file holding a `Scenario` serialised with serde ([`load_json`]);
-//! - a **`.tl` source** in the scenario language (not available yet: loading one reports `tl::E005`).
+//! - a **`.tl` file** in the scenario language (`grammar/README.md`), compiled on load
+//!   ([`compile_file`]; [`compile`] takes the text itself).
 //!
 //! Every failure is a [`LoadError`], a [`miette::Diagnostic`] with a stable code (`tl::E001` …
-//! `tl::E005`); [`render_plain`] renders one as fixed, colourless text for snapshots and Python
-//! exception messages.
+//! `tl::E004`, or the compiler's `tl::E1xx` with every diagnostic of the file); [`render_plain`]
+//! renders one as fixed, colourless text for snapshots and Python exception messages.
 //!
 //! ```
 //! let scenario = touchline_dsl::load("academy_empty_goal_close").unwrap();

@@ -1,7 +1,7 @@
 //! The shipped scenarios (`stdlib-scenarios/*.tl`), embedded at compile time.
 //!
-//! One scenario per scenario of Google Research Football (shared/reference/grf.md §2.1, tables in
-//! §2.3 and §2.4): the 19 top-level ones and the 16 `tests/…` ones, as `.tl` sources compiled on
+//! One scenario per scenario of Google Research Football (docs/grf-compatibility.md#scenario-list,
+//! its tables: #scenario-settings, #scenario-players): the 19 top-level ones and the 16 `tests/…` ones, as `.tl` sources compiled on
 //! load. Each compiles, without warnings, to exactly the golden compiled JSON checked in beside it
 //! (`dsl/tests/golden.rs`).
 

@@ -109,7 +109,8 @@ fn every_behaviour_compiles_to_its_engine_value() {
 
 #[test]
 fn behaviour_points_are_in_the_team_frame_with_player_metres() {
-    // 11 m along x is 11 / 55 = 0.2 for a player (grf.md §2.2), whichever side he plays on.
+    // 11 m along x is 11 / 55 = 0.2 for a player (docs/grf-compatibility.md#scenario-semantics), whichever
+    // side he plays on.
     let s = scenario(
         "  team left { GK at (-1, 0) CB at (-0.5, 0) does move_to((11 m, 0)) }
   team right { GK at (-1, 0) CB at (-0.5, 0) does move_to(11 m, -0.1) until me in circle(0, 0, 5.5 m) }",
@@ -323,7 +324,8 @@ fn an_end_when_condition_of_the_language_ends_the_episode() {
     }
     let step = ended.expect("the episode ends");
     let x = env.game().team(Side::Left)[1].position.x;
-    // The box starts 16.5 m from the goal line (52.5 m from the centre, grf.md §2.2 scaling aside).
+    // The box starts 16.5 m from the goal line (52.5 m from the centre,
+    // docs/grf-compatibility.md#scenario-semantics scaling aside).
     assert!(x > 30.0, "ended at step {step} with the striker at x = {x} m");
     assert!(step > 3);
 }

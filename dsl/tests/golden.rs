@@ -1,6 +1,6 @@
 //! Golden equality: every stdlib `.tl` source (GRF's 19 scenarios and its 16 `tests/` scenarios)
-//! compiles to exactly the compiled JSON checked in beside it, which holds grf.md's tables (§2.3
-//! configuration, §2.4 players).
+//! compiles to exactly the compiled JSON checked in beside it, which holds GRF's tables
+//! (docs/grf-compatibility.md#scenario-settings, #scenario-players).
 
 use touchline_engine::Scenario;
 

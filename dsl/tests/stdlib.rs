@@ -1,9 +1,9 @@
-//! The embedded stdlib scenarios against GRF's tables (shared/reference/grf.md §2.3, §2.4).
+//! The embedded stdlib scenarios against GRF's tables (docs/grf-compatibility.md#scenario-settings, #scenario-players).
 
 use touchline_dsl::{load, stdlib};
 use touchline_engine::{PlayerEntry, Role, Scenario};
 
-/// grf.md §2.3: name, #left, #right, game_duration, left difficulty, right difficulty,
+/// docs/grf-compatibility.md#scenario-settings: name, #left, #right, game_duration, left difficulty, right difficulty,
 /// swap by episode parity.
 const SUMMARY: &[(&str, usize, usize, u32, f32, f32, bool)] = &[
     ("11_vs_11_competition", 11, 11, 3000, 1.0, 1.0, true),

@@ -1,4 +1,4 @@
-//! The observation encoders (grf.md §4) on observations produced by a real `Env`.
+//! The observation encoders (docs/grf-compatibility.md#representations) on observations produced by a real `Env`.
 
 mod common;
 

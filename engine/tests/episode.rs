@@ -1,6 +1,6 @@
-//! The episode loop against GRF's figures (grf.md §5.3, §6, §7.2): steps_left, termination and
-//! truncation, sticky actions seen in each controller's frame, Scoring and Checkpoint rewards,
-//! controlled-player switching, and errors.
+//! The episode loop against GRF's figures (docs/grf-compatibility.md#sticky-actions, #rewards,
+//! #episode-length): steps_left, termination and truncation, sticky actions seen in each controller's frame,
+//! Scoring and Checkpoint rewards, controlled-player switching, and errors.
 
 mod common;
 
@@ -8,7 +8,7 @@ use touchline_engine::{Action, EngineError, Env, EnvConfig, GameMode, Side};
 
 #[test]
 fn steps_left_and_the_time_limit_follow_grf() {
-    // A 10-step game ends after 11 steps (grf.md §7.2: the second-half test).
+    // A 10-step game ends after 11 steps (docs/grf-compatibility.md#episode-length: the second-half test).
     let mut env = Env::new(common::empty_pitch(10), 0).unwrap();
     assert_eq!(env.observations()[0].steps_left, 11);
     assert_eq!(env.info().steps_left, 11);
@@ -230,8 +230,8 @@ fn builtin_ai_hands_the_player_to_the_ai_until_another_action() {
 
 #[test]
 fn an_agent_that_stalls_at_a_set_piece_is_made_to_play_it() {
-    // GRF's anti-stalling rule (grf.md §5.4): after 20 steps waiting, the agent's action becomes
-    // short_pass, so a throw-in that the agent's player takes is played at last.
+    // GRF's anti-stalling rule (docs/grf-compatibility.md#action-effects): after 20 steps waiting, the
+    // agent's action becomes short_pass, so a throw-in that the agent's player takes is played at last.
     let mut env = Env::new(common::scenario("11_vs_11_stochastic"), 2).unwrap();
     env.game_mut().place_ball(
         glam::Vec3::new(-20.0, -35.9, 0.11),

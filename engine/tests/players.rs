@@ -1,6 +1,6 @@
-//! Issue 7, players: per-slot attributes (the same for both teams, grf.md §7.7) and fatigue that
-//! grows with running, slows players down, is observed as `tired_factor` and is restored at
-//! half-time (grf.md §7.3).
+//! Issue 7, players: per-slot attributes (the same for both teams, docs/grf-compatibility.md#player-stats)
+//! and fatigue that grows with running, slows players down, is observed as `tired_factor` and is restored at
+//! half-time (docs/grf-compatibility.md#half-time).
 
 mod common;
 
@@ -34,7 +34,7 @@ fn running_tires_players_and_half_time_restores_them() {
     for p in env.game().players().iter().filter(|p| !p.is_keeper()) {
         assert!(p.max_speed < p.fresh_speed, "a tired player is slower: {p:?}");
     }
-    // GRF counts the half-time step one later (grf.md §7.2-7.3).
+    // GRF counts the half-time step one later (docs/grf-compatibility.md#episode-length, #half-time).
     env.step(&[Action::BuiltinAi]).unwrap();
     env.step(&[Action::BuiltinAi]).unwrap();
     let o = &env.observations()[0];

@@ -75,7 +75,7 @@ fn each_restart_starts_in_its_game_mode_on_its_spot() {
         ),
         (start(GameMode::ThrowIn, Side::Right, Some([0.2, -0.3])), GameMode::ThrowIn, (0.2 * 54.4, -36.0), Side::Right),
         (start(GameMode::GoalKick, Side::Right, None), GameMode::GoalKick, (0.92 * 55.0, 0.0), Side::Right),
-        // A kickoff is taken at once (grf.md §3.4): open play from the centre spot.
+        // A kickoff is taken at once (docs/grf-compatibility.md#game-modes): open play from the centre spot.
         (start(GameMode::KickOff, Side::Right, None), GameMode::Normal, (0.0, 0.0), Side::Right),
     ];
     for (restart, mode, (x, y), taking) in cases {

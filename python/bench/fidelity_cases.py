@@ -24,7 +24,7 @@ from typing import Any, Protocol
 
 from touchline.compat.gfootball import FootballEnv, create_environment
 
-# GRF's default action set (grf.md §5): the indices the probes press.
+# GRF's default action set (docs/grf-compatibility.md#actions): the indices the probes press.
 IDLE = 0
 RIGHT = 5
 LONG_PASS = 9

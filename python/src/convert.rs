@@ -1,5 +1,5 @@
-//! Raw observations as GRF's dict of numpy arrays (grf.md §3.1): float64 positions, int64 roles,
-//! bool flags, uint8 sticky actions.
+//! Raw observations as GRF's dict of numpy arrays (docs/grf-compatibility.md#raw-observation): float64
+//! positions, int64 roles, bool flags, uint8 sticky actions.
 
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;

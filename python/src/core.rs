@@ -7,10 +7,10 @@ use touchline_engine::obs::{FrameStack, encode_simple115, encode_simple115v2, en
 use touchline_engine::{ActionSet, EngineError, Env, EnvConfig, Scenario, Snapshot, StepInfo, StepOutcome};
 use touchline_render::{PixelsEncoder, PixelsKind};
 
-/// Frames kept by `stacked=True` (GRF's FrameStack(4), grf.md §4.4).
+/// Frames kept by `stacked=True` (GRF's FrameStack(4), docs/grf-compatibility.md#frame-stacking).
 const STACK: usize = 4;
 
-/// How observations are encoded (grf.md §4).
+/// How observations are encoded (docs/grf-compatibility.md#representations).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Representation {
     /// GRF's dict of arrays (no array encoding).

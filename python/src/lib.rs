@@ -21,7 +21,7 @@ fn scenario_names() -> Vec<&'static str> {
     touchline_dsl::stdlib::names().to_vec()
 }
 
-/// The compiled JSON of a scenario (stdlib name or `.json` path).
+/// The compiled JSON of a scenario (stdlib name, or the path of a `.tl` or compiled `.json` file).
 #[pyfunction]
 fn scenario_json(py: Python<'_>, scenario: &str) -> PyResult<String> {
     errors::guard(|| {

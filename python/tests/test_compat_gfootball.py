@@ -10,7 +10,7 @@ import pytest
 import touchline
 from touchline.compat.gfootball import create_environment
 
-#: GRF's EXPOSED_OBSERVATIONS plus the per-controller keys (grf.md §3.1).
+#: GRF's EXPOSED_OBSERVATIONS plus the per-controller keys (docs/grf-compatibility.md#raw-observation).
 GRF_RAW_KEYS = {
     "ball",
     "ball_direction",
@@ -62,7 +62,7 @@ def test_default_representation_is_smm() -> None:
     assert obs.shape == (72, 96, 4) and obs.dtype == np.uint8
     assert env.observation_space is not None
     assert env.observation_space.shape == (72, 96, 4)
-    assert obs.max() == 255  # marked pixels are 255 (grf.md §4.2)
+    assert obs.max() == 255  # marked pixels are 255 (docs/grf-compatibility.md#smm)
     obs, *_ = env.step(0)
     assert obs.shape == (72, 96, 4)
 
@@ -71,7 +71,7 @@ def test_stacked_smm() -> None:
     env = create_environment(env_name="academy_empty_goal_close", stacked=True)
     obs = env.reset()
     assert obs.shape == (72, 96, 16)
-    # Reset replicates the first frame 4 times (grf.md §4.4).
+    # Reset replicates the first frame 4 times (docs/grf-compatibility.md#frame-stacking).
     for k in range(1, 4):
         np.testing.assert_array_equal(obs[..., 4 * k : 4 * k + 4], obs[..., 0:4])
 

@@ -15,7 +15,7 @@ SCENARIOS = touchline.scenario_names()
 REPRESENTATIONS = ["simple115v2", "simple115", "extracted"]
 
 # check_env warns that Box(-inf, inf) is "probably too low/high"; simple115's space is unbounded on
-# purpose (GRF's space, grf.md §4.1: ball z and directions have no hard bound).
+# purpose (GRF's space, docs/grf-compatibility.md#simple115: ball z and directions have no hard bound).
 unbounded_box = pytest.mark.filterwarnings(
     r"ignore:.*A Box observation space (minimum|maximum) value is -?infinity:UserWarning"
 )

@@ -64,7 +64,7 @@ def test_pixels_stack_and_resize() -> None:
     )
     obs, _ = env.reset()
     assert obs.shape == (120, 160, 12)
-    # Reset fills the stack with copies of the first frame (grf.md §4.4).
+    # Reset fills the stack with copies of the first frame (docs/grf-compatibility.md#frame-stacking).
     np.testing.assert_array_equal(obs[..., 0:3], obs[..., 9:12])
     for _ in range(5):
         obs, *_ = env.step(5)

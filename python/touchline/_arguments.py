@@ -19,15 +19,15 @@ from gymnasium import spaces
 from ._touchline import Env as _CoreEnv
 
 #: Representations whose observations are arrays (Gymnasium and PettingZoo envs accept these);
-#: "pixels" and "pixels_gray" are frames drawn on the CPU (grf.md §4.3).
+#: "pixels" and "pixels_gray" are frames drawn on the CPU (docs/grf-compatibility.md#pixels).
 ARRAY_REPRESENTATIONS = ("simple115v2", "simple115", "extracted", "pixels", "pixels_gray")
-#: Every representation the extension can encode; "raw" is a list of dicts (grf.md §3.1).
+#: Every representation the extension can encode; "raw" is a list of dicts (docs/grf-compatibility.md#raw-observation).
 REPRESENTATIONS = ("raw", *ARRAY_REPRESENTATIONS)
 #: Render modes of the Gymnasium and PettingZoo envs: `render()` returns an RGB array.
 RENDER_MODES = ("rgb_array",)
-#: Action sets (grf.md §5.2): "default" has 19 actions, "v2" adds builtin_ai (20).
+#: Action sets (docs/grf-compatibility.md#action-sets): "default" has 19 actions, "v2" adds builtin_ai (20).
 ACTION_SETS = ("default", "v2")
-#: Reward terms (grf.md §6); "scoring" is always on.
+#: Reward terms (docs/grf-compatibility.md#rewards); "scoring" is always on.
 REWARD_TERMS = ("scoring", "checkpoints")
 #: Seeds are unsigned 64-bit integers on the Rust side.
 SEED_LIMIT = 2**64
@@ -66,7 +66,7 @@ def representation_argument(representation: str, *, allow_raw: bool) -> str:
 
 
 def rewards_argument(rewards: str) -> str:
-    """GRF's comma-separated reward list (grf.md §6), normalised for the extension.
+    """GRF's comma-separated reward list (docs/grf-compatibility.md#rewards), normalised for the extension.
 
     "scoring" must be present (GRF asserts it); "checkpoints" adds GRF's checkpoint reward.
     """
@@ -87,7 +87,7 @@ def rewards_argument(rewards: str) -> str:
 
 
 def action_set_argument(action_set: str) -> str:
-    """Checks the action set name (grf.md §5.2)."""
+    """Checks the action set name (docs/grf-compatibility.md#action-sets)."""
     if action_set == "full":
         raise ValueError(
             "action_set='full' (33 actions, GRF's play_game set) is not supported; "
@@ -197,7 +197,7 @@ def show_watch_messages(core: Any) -> None:
 
 
 def observation_box(shape: tuple[int, ...], dtype: str) -> spaces.Box:
-    """The Box of one observation: float32 (-inf, inf) or uint8 [0, 255] (grf.md §4.1, §4.2)."""
+    """The Box of one observation: float32 (-inf, inf) or uint8 [0, 255] (docs/grf-compatibility.md#simple115, #smm)."""
     if dtype == "float32":
         return spaces.Box(-np.inf, np.inf, shape, np.float32)
     if dtype == "uint8":

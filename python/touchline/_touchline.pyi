@@ -40,7 +40,8 @@ def scenario_names() -> list[str]:
     """Names of the stdlib scenarios, sorted."""
 
 def scenario_json(scenario: str) -> str:
-    """The compiled JSON of a scenario given as a stdlib name or a `.json` path.
+    """The compiled JSON of a scenario given as a stdlib name, or the path of a `.tl` scenario
+    (compiled here) or of a compiled `.json` one.
 
     Raises:
         ScenarioError: unknown name, unreadable file or invalid scenario.
@@ -133,7 +134,7 @@ class Env:
             RuntimeError: stepping after the episode ended (call reset).
         """
     def raw_observations(self) -> list[dict[str, Any]]:
-        """The raw observation of each controller (GRF's dict of numpy arrays, grf.md §3.1)."""
+        """The raw observation of each controller (GRF's dict of numpy arrays, docs/grf-compatibility.md#raw-observation)."""
     def render(self, width: int = 1280, height: int = 720) -> npt.NDArray[np.uint8]:
         """The match drawn from above on the CPU: a (height, width, 3) uint8 RGB image with the
         scoreboard, every agent-driven player ringed in yellow.

@@ -43,11 +43,11 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
 
     ## Action Space
 
-    GRF's action set (grf.md §5.2). `action_set="default"`: `Discrete(19)` —
+    GRF's action set (docs/grf-compatibility.md#action-sets). `action_set="default"`: `Discrete(19)` —
     0 idle, 1 left, 2 top_left, 3 top, 4 top_right, 5 right, 6 bottom_right, 7 bottom, 8 bottom_left,
     9 long_pass, 10 high_pass, 11 short_pass, 12 shot, 13 sprint, 14 release_direction,
     15 release_sprint, 16 sliding, 17 dribble, 18 release_dribble. `action_set="v2"` adds
-    19 builtin_ai (`Discrete(20)`). Directions and sprint/dribble are sticky (grf.md §5.3). With M > 1
+    19 builtin_ai (`Discrete(20)`). Directions and sprint/dribble are sticky (docs/grf-compatibility.md#sticky-actions). With M > 1
     controlled players the space is `MultiDiscrete([n] * M)`, left controllers first; a right-team
     player's directions are in its own (rotated) frame.
 
@@ -60,14 +60,14 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
 
     | representation | shape, dtype | content |
     |---|---|---|
-    | `simple115v2` | (115,) float32 | 0–21 left positions (x, y per player, padded with −1 to 11 players), 22–43 left directions, 44–65 right positions, 66–87 right directions, 88–90 ball x, y, z, 91–93 ball direction, 94–96 ball owner one-hot (nobody, left, right), 97–107 active player one-hot, 108–114 game mode one-hot (grf.md §4.1) |
+    | `simple115v2` | (115,) float32 | 0–21 left positions (x, y per player, padded with −1 to 11 players), 22–43 left directions, 44–65 right positions, 66–87 right directions, 88–90 ball x, y, z, 91–93 ball direction, 94–96 ball owner one-hot (nobody, left, right), 97–107 active player one-hot, 108–114 game mode one-hot (docs/grf-compatibility.md#simple115) |
     | `simple115` | (115,) float32 | the same blocks, the four player blocks back to back and padded only at the end (GRF's legacy layout) |
-    | `extracted` | (72, 96, 4) uint8 | Super Mini Map: channels left team, right team, ball, active player; 255 where marked (grf.md §4.2); (height, width) from `channel_dimensions=(width, height)` |
-    | `pixels` | (72, 96, 3) uint8 | the match drawn from above on the CPU, RGB 0–255: own team red attacking right, opponents blue, controlled player ringed in yellow, ball with its shadow (grf.md §4.3); size from `channel_dimensions` |
+    | `extracted` | (72, 96, 4) uint8 | Super Mini Map: channels left team, right team, ball, active player; 255 where marked (docs/grf-compatibility.md#smm); (height, width) from `channel_dimensions=(width, height)` |
+    | `pixels` | (72, 96, 3) uint8 | the match drawn from above on the CPU, RGB 0–255: own team red attacking right, opponents blue, controlled player ringed in yellow, ball with its shadow (docs/grf-compatibility.md#pixels); size from `channel_dimensions` |
     | `pixels_gray` | (72, 96, 1) uint8 | the same frame in grey, 0.299 R + 0.587 G + 0.114 B |
 
     `stacked=True` stacks the last 4 observations along the last axis (115 → 460 floats, 4 → 16
-    channels, 3 → 12 for `pixels`; grf.md §4.4). With M > 1 controlled players observations gain a leading axis of size M.
+    channels, 3 → 12 for `pixels`; docs/grf-compatibility.md#frame-stacking). With M > 1 controlled players observations gain a leading axis of size M.
     The space is `Box(-inf, inf)` for `simple115*` (as in GRF) and `Box(0, 255)` for `extracted` and `pixels*`.
     `representation="raw"` is not accepted here (a list of dicts has no Box); use
     `raw_observations()`, `touchline.compat.gfootball` or `touchline._touchline.Env`.
@@ -77,19 +77,19 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
     `rewards="scoring"`: +1 when the left team scores, −1 when it concedes (a right-team controller
     gets the opposite). `"scoring,checkpoints"` adds GRF's checkpoint reward: 0.1 for each of 10
     distance rings around the opponent goal, collected while the controlled player owns the ball,
-    all paid at once on scoring (grf.md §6). With M > 1 controlled players, GRF returns one reward
+    all paid at once on scoring (docs/grf-compatibility.md#rewards). With M > 1 controlled players, GRF returns one reward
     per player; Gymnasium needs a float, so `reward` is the **mean** of the controllers' rewards and
     `info["rewards"]` holds the float32 vector (M,). For self-play use `touchline.parallel_env`.
 
     ## Starting State
 
-    The scenario's positions (GRF's tables, grf.md §2.4), drawn again at every reset where the
+    The scenario's positions (GRF's tables, docs/grf-compatibility.md#scenario-players), drawn again at every reset where the
     scenario randomises them. The first observation has `steps_left = game_duration + 1`.
 
     ## Episode End
 
     * `terminated`: the scenario's end conditions — a goal, the ball going out of play, or a
-      change of possession in the Academy drills (grf.md §7.2).
+      change of possession in the Academy drills (docs/grf-compatibility.md#episode-length).
     * `truncated`: the time limit, after `game_duration + 1` steps (401 for Academy drills, 3001 for
       full matches). Calling `step` after either raises `RuntimeError`; call `reset`.
 
@@ -184,7 +184,7 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
         )
 
     def get_state(self) -> bytes:
-        """The whole state of the episode as bytes (GRF's `get_state`, grf.md §7.9).
+        """The whole state of the episode as bytes (GRF's `get_state`, docs/grf-compatibility.md#determinism).
 
         The match (physics, players, referee, AI, random stream), sticky actions, reward and
         end-condition bookkeeping, episode counters and stacked frames: restoring it with
@@ -272,7 +272,7 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
         return observation, float(rewards.mean()), terminated, truncated, info
 
     def raw_observations(self) -> list[dict[str, Any]]:
-        """GRF's raw observation of each controlled player (a dict of numpy arrays, grf.md §3.1)."""
+        """GRF's raw observation of each controlled player (a dict of numpy arrays, docs/grf-compatibility.md#raw-observation)."""
         return self._core.raw_observations()
 
     def render(self) -> np.ndarray | None:

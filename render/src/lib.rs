@@ -8,7 +8,7 @@
 //!   players in their team's colours with shirt numbers, a yellow ring round agent-driven players,
 //!   a white marker over the ball carrier, the ball with a shadow that shows its height, and a
 //!   scoreboard (score, match clock, game mode). A frame depends only on the scene and the size;
-//! - [`PixelsEncoder`] gives the `pixels` (RGB) and `pixels_gray` observations (grf.md §4.3);
+//! - [`PixelsEncoder`] gives the `pixels` (RGB) and `pixels_gray` observations (docs/grf-compatibility.md#pixels);
 //! - [`replay`] records episodes into a compact, versioned, checksummed file and plays them back,
 //!   re-simulating bit for bit;
 //! - [`video`] draws a replay into an animated GIF, an MP4 (through `ffmpeg`) or PNG frames.

@@ -1,5 +1,5 @@
 //! The colours of a frame (RGB). Teams are red (left) and blue (right) as in GRF's 2-D videos
-//! (grf.md §9.1), goalkeepers in lighter shades of their team's colour so that they stand out.
+//! (docs/grf-compatibility.md#replays), goalkeepers in lighter shades of their team's colour so that they stand out.
 
 /// Outside the rim.
 pub(crate) const SURROUND: [u8; 3] = [28, 74, 36];

@@ -1,4 +1,4 @@
-//! The `pixels` and `pixels_gray` observations (grf.md §4.3): a rendered frame of the match, by
+//! The `pixels` and `pixels_gray` observations (docs/grf-compatibility.md#pixels): a rendered frame of the match, by
 //! default 96 × 72 as GRF's `channel_dimensions`.
 //!
 //! | kind | shape | dtype | values |
@@ -19,7 +19,7 @@ use touchline_engine::Env;
 use crate::renderer::{RenderError, RenderOptions, Renderer};
 use crate::scene::Scene;
 
-/// GRF's default observation width (`channel_dimensions[0]`, grf.md §4.3).
+/// GRF's default observation width (`channel_dimensions[0]`, docs/grf-compatibility.md#pixels).
 pub const PIXELS_WIDTH: usize = 96;
 /// GRF's default observation height (`channel_dimensions[1]`).
 pub const PIXELS_HEIGHT: usize = 72;

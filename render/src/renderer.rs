@@ -175,7 +175,7 @@ impl Renderer {
 
     /// Writes the last frame as grey levels into `out` (`height × width` bytes), with OpenCV's
     /// `COLOR_RGB2GRAY` weights in fixed point: `Y = (4899 R + 9617 G + 1868 B + 8192) >> 14`
-    /// (0.299, 0.587, 0.114, as GRF's `pixels_gray`, grf.md §4.3).
+    /// (0.299, 0.587, 0.114, as GRF's `pixels_gray`, docs/grf-compatibility.md#pixels).
     ///
     /// # Panics
     /// When `out` has another length (a programming error).

@@ -5,7 +5,7 @@ use serde::{Deserialize, Serialize};
 use touchline_engine::{Env, GameMode, Match, Role, Side};
 
 /// Game seconds per env step on the scoreboard clock: GRF's 3000-step match is 90 minutes, so one
-/// step shows as 1.8 s (grf.md §7.1–7.2).
+/// step shows as 1.8 s (docs/grf-compatibility.md#time-base, #episode-length).
 pub const CLOCK_SECONDS_PER_STEP: f32 = 5400.0 / 3000.0;
 
 /// One player as drawn.
@@ -64,8 +64,8 @@ impl Scene {
     }
 
     /// Overwrites `self` with controller `controller`'s view of `env` (as the other observations,
-    /// grf.md §3.2): for a right-team controller the pitch is turned by 180° and the teams swap
-    /// colours and score order, so that the viewer's team is always the left (red) team playing
+    /// docs/grf-compatibility.md#coordinates): for a right-team controller the pitch is turned by 180° and
+    /// the teams swap colours and score order, so that the viewer's team is always the left (red) team playing
     /// towards the right. Only that controller's player is marked as controlled. A controller
     /// index out of range marks nobody.
     pub fn capture_view(&mut self, env: &Env, controller: usize) {

@@ -40,7 +40,7 @@ const NAMES: [&str; 7] =
 const MEASURES: [&str; 3] = ["distance", "steps", "score"];
 /// What `X is …` may ask about.
 const SUBJECTS: [&str; 2] = ["owner", "game_mode"];
-/// Game modes as written in conditions (GRF's `e_GameMode`, grf.md §3.4).
+/// Game modes as written in conditions (GRF's `e_GameMode`, docs/grf-compatibility.md#game-modes).
 pub(crate) const GAME_MODES: [(&str, GameMode); 7] = [
     ("normal", GameMode::Normal),
     ("kick_off", GameMode::KickOff),

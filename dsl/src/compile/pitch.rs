@@ -1,25 +1,26 @@
 //! Named places of the language: pitch regions, formations, unit conversions.
 //!
 //! Everything is in scenario units: x from the own goal line (−1) to the opponent's (+1), y across
-//! with the touchlines at ±0.42 (grf.md §2.2). For players these are the team's own frame; for the
-//! ball and end conditions the left team's frame (global).
+//! with the touchlines at ±0.42 (docs/grf-compatibility.md#scenario-semantics). For players these are the
+//! team's own frame; for the ball and end conditions the left team's frame (global).
 
 use touchline_engine::Role;
 use touchline_engine::geometry::coords::{SCENARIO_LINES, SCENARIO_RIM};
 use touchline_engine::scenario::Region;
 
-/// Metres per scenario unit along x for players (the engine places a player at 55·x m, grf.md §2.2).
+/// Metres per scenario unit along x for players (the engine places a player at 55·x m,
+/// docs/grf-compatibility.md#scenario-semantics).
 pub(crate) const PLAYER_X_METRES: f64 = 55.0;
-/// Metres per scenario unit across for players (2.36 · 36 m, grf.md §2.2).
+/// Metres per scenario unit across for players (2.36 · 36 m, docs/grf-compatibility.md#scenario-semantics).
 pub(crate) const PLAYER_Y_METRES: f64 = 2.36 * 36.0;
-/// Metres per unit along x for the ball (54.4 m, grf.md §2.2).
+/// Metres per unit along x for the ball (54.4 m, docs/grf-compatibility.md#scenario-semantics).
 pub(crate) const BALL_X_METRES: f64 = 54.4;
-/// Metres per unit across for the ball (83.6 m, grf.md §2.2).
+/// Metres per unit across for the ball (83.6 m, docs/grf-compatibility.md#scenario-semantics).
 pub(crate) const BALL_Y_METRES: f64 = 83.6;
 
 /// Penalty area depth, 16.5 m (Law 1), in player x units.
 const PENALTY_DEPTH: f32 = (16.5 / PLAYER_X_METRES) as f32;
-/// Penalty area half width, 20.15 m (Law 1; grf.md §7.4), in player y units.
+/// Penalty area half width, 20.15 m (Law 1; docs/grf-compatibility.md#pitch-geometry), in player y units.
 const PENALTY_HALF_WIDTH: f32 = (20.15 / PLAYER_Y_METRES) as f32;
 /// Goal area depth, 5.5 m (Law 1).
 const GOAL_AREA_DEPTH: f32 = (5.5 / PLAYER_X_METRES) as f32;

@@ -1,4 +1,4 @@
-//! Law 12, cards and sending-offs (grf.md §7.8): two yellows make a red; a sent-off player is
+//! Law 12, cards and sending-offs (docs/grf-compatibility.md#laws): two yellows make a red; a sent-off player is
 //! inactive and off the field; a team's last active player stays on; a sent-off keeper is
 //! replaced in goal by the first active team-mate, who takes the GK role.
 

@@ -24,9 +24,9 @@ fn left_defender_puts_it_behind_a_right_corner_on_the_top_side() {
     assert_eq!(env.game().owner().map(|o| o.0), Some(Side::Right));
 }
 
-/// GRF's `tests/corner_test` (grf.md §2.4, §10.1 test_corner), first episode: a left winger
-/// runs the ball over his own goal line; the right team's corner at (−1.011, 0.43) with its winger
-/// at the flag and both keepers on their lines.
+/// GRF's `tests/corner_test` (docs/grf-compatibility.md#scenario-players, #grf-tests test_corner), first
+/// episode: a left winger runs the ball over his own goal line; the right team's corner at (−1.011, 0.43)
+/// with its winger at the flag and both keepers on their lines.
 #[test]
 fn grf_corner_test() {
     use touchline_engine::{Action, Env, EnvConfig, PlayerEntry, Role, Scenario};

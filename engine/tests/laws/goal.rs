@@ -1,6 +1,6 @@
-//! Law 10, a goal, modelled on GRF's `tests/goal_test` (grf.md §2.4, §10.1 test_goal): two lone
-//! keepers, the one on the ball runs it into the empty goal; the goal counts for his team and play
-//! restarts from the centre spot.
+//! Law 10, a goal, modelled on GRF's `tests/goal_test` (docs/grf-compatibility.md#scenario-players,
+//! #grf-tests test_goal): two lone keepers, the one on the ball runs it into the empty goal; the goal counts
+//! for his team and play restarts from the centre spot.
 
 use touchline_engine::{Action, Env, EnvConfig, Event, PlayerEntry, Role, Scenario, Side};
 

@@ -33,8 +33,8 @@ fn over_the_bar_is_not_a_goal() {
     assert_eq!(env.info().score, [0, 0]);
 }
 
-/// GRF's `tests/keeper_test` (grf.md §2.4, §10.1 test_keeper_ball), first episode: a left winger
-/// runs the ball over the right goal line; the right keeper holds it for the goal kick at
+/// GRF's `tests/keeper_test` (docs/grf-compatibility.md#scenario-players, #grf-tests test_keeper_ball), first
+/// episode: a left winger runs the ball over the right goal line; the right keeper holds it for the goal kick at
 /// x ≈ 1.0.
 #[test]
 fn grf_keeper_test() {

@@ -1,6 +1,6 @@
-//! Half-time at `second_half` (grf.md §7.3; GRF's `tests/second_half` and test_second_half): with
-//! a 10-step game and the second half at step 5, the controlled player stays near the centre for
-//! the first five steps, then (GRF's counting: engine step 5 is env step 6) the teams exchange
+//! Half-time at `second_half` (docs/grf-compatibility.md#half-time; GRF's `tests/second_half` and
+//! test_second_half): with a 10-step game and the second half at step 5, the controlled player stays near the
+//! centre for the first five steps, then (GRF's counting: engine step 5 is env step 6) the teams exchange
 //! formations for the other team's kickoff, and the episode ends after 11 steps.
 
 use touchline_engine::{Action, Env, PlayerEntry, Role, Scenario};

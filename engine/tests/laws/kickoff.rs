@@ -35,9 +35,10 @@ fn the_conceding_team_kicks_off() {
     }
 }
 
-/// GRF's `tests/kickoff_for_goal_loosing_team_test` (grf.md §2.2, §2.4): both keepers stand in the
-/// right goal, so the right team, which starts at the ball, walks it into the empty left goal;
-/// then the left team kicks off in the kickoff formation (its winger on the centre spot).
+/// GRF's `tests/kickoff_for_goal_loosing_team_test` (docs/grf-compatibility.md#scenario-semantics,
+/// #scenario-players): both keepers stand in the right goal, so the right team, which starts at the ball,
+/// walks it into the empty left goal; then the left team kicks off in the kickoff formation (its winger on
+/// the centre spot).
 #[test]
 fn grf_kickoff_for_goal_loosing_team_test() {
     use touchline_engine::{Env, PlayerEntry, Role, Scenario};

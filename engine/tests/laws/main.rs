@@ -1,5 +1,5 @@
 //! One module per law, driven through `Env` as a user would see them, modelled on GRF's test
-//! scenarios (grf.md §2.4, §10.1) where GRF has one.
+//! scenarios (docs/grf-compatibility.md#scenario-players, #grf-tests) where GRF has one.
 
 #[path = "../common/mod.rs"]
 mod common;

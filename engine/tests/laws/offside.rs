@@ -1,7 +1,7 @@
-//! Law 11, offside, modelled on GRF's `tests/offside_test` (grf.md §2.4, §10.1 test_offside): one
-//! team has a keeper near the centre spot and a winger far up the pitch, the other two lazy players
-//! on the halfway line. The keeper's long pass to the winger is offside: an indirect free kick for
-//! the defenders where the winger touched the ball. Not when the law is off, not when the winger
+//! Law 11, offside, modelled on GRF's `tests/offside_test` (docs/grf-compatibility.md#scenario-players,
+//! #grf-tests test_offside): one team has a keeper near the centre spot and a winger far up the pitch, the
+//! other two lazy players on the halfway line. The keeper's long pass to the winger is offside: an indirect
+//! free kick for the defenders where the winger touched the ball. Not when the law is off, not when the winger
 //! is behind the second-last defender, not when the defenders have a single active player.
 
 use touchline_engine::rules::Stoppage;

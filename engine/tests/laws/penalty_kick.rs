@@ -1,6 +1,6 @@
-//! Law 14, the penalty kick, modelled on GRF's `tests/penalty` (grf.md §2.4, §10.1 test_penalty):
-//! the left agent slides into a right forward who has the ball inside the left penalty area; the
-//! referee gives a penalty kick: ball on the mark (x ≈ −0.809), keepers on their lines, the taker
+//! Law 14, the penalty kick, modelled on GRF's `tests/penalty` (docs/grf-compatibility.md#scenario-players,
+//! #grf-tests test_penalty): the left agent slides into a right forward who has the ball inside the left
+//! penalty area; the referee gives a penalty kick: ball on the mark (x ≈ −0.809), keepers on their lines, the taker
 //! at the ball and everyone else outside the area.
 
 use touchline_engine::rules::Stoppage;

@@ -295,7 +295,7 @@ impl Replay {
 
     /// The part of the replay from frame `first` to frame `last` (inclusive), for instance the
     /// moments round a goal (GRF's `score` dumps keep the 100 steps before a goal and 1 after,
-    /// grf.md §9.1). The clip starts from a snapshot taken by re-simulating up to `first`, so it
+    /// docs/grf-compatibility.md#replays). The clip starts from a snapshot taken by re-simulating up to `first`, so it
     /// re-simulates on its own.
     ///
     /// # Errors

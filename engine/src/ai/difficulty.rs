@@ -1,5 +1,5 @@
 //! Difficulty θ ∈ [0, 1]: how quickly and how well a team's AI decides (GRF: easy 0.05, medium
-//! 0.6, hard 0.95; grf.md §2.3, §7.6).
+//! 0.6, hard 0.95; docs/grf-compatibility.md#scenario-settings, #controlled-players).
 
 /// How much of his ability a player of a team of difficulty θ shows, 0.3 + 0.7·θ: defined with
 /// the players' stats, which it scales, and used by the AI for its reach too.
@@ -14,8 +14,8 @@ pub struct Difficulty {
     /// θ itself.
     pub theta: f32,
     /// Ticks between decisions: 5 + 10·(1 − θ), i.e. 50 ms at θ = 1 to 150 ms at θ = 0. GRF adds
-    /// (1 − θ)·100 ms of reaction time (grf.md §7.6). Fractional: the AI carries the remainder from
-    /// one decision to the next, so the mean interval is exactly this and smooth in θ.
+    /// (1 − θ)·100 ms of reaction time (docs/grf-compatibility.md#controlled-players). Fractional: the AI
+    /// carries the remainder from one decision to the next, so the mean interval is exactly this and smooth in θ.
     pub reaction_ticks: f32,
     /// Amplitude of the noise added to the value of each option (pass, shot, dribble). The same
     /// at every θ: GRF's AI has no decision noise tied to θ, its choices are as random at any θ

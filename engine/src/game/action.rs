@@ -1,4 +1,4 @@
-//! Agent actions with GRF's numbering (shared/reference/grf.md §5.1–5.2).
+//! Agent actions with GRF's numbering (docs/grf-compatibility.md#core-actions, #action-sets).
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
@@ -46,7 +46,7 @@ pub enum Action {
     BuiltinAi = 32,
 }
 
-/// The eight movement directions in sticky-action order (grf.md §5.3).
+/// The eight movement directions in sticky-action order (docs/grf-compatibility.md#sticky-actions).
 pub const DIRECTIONS: [Action; 8] = [
     Action::Left,
     Action::TopLeft,
@@ -132,7 +132,7 @@ impl Action {
     }
 }
 
-/// Which actions an agent may send, and in what order (grf.md §5.2).
+/// Which actions an agent may send, and in what order (docs/grf-compatibility.md#action-sets).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ActionSet {

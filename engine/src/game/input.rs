@@ -4,7 +4,7 @@
 
 use glam::Vec2;
 
-/// The kinds of kick a player can make (grf.md §5.4).
+/// The kinds of kick a player can make (docs/grf-compatibility.md#action-effects).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub enum KickKind {
     /// Ground pass to a team-mate.
@@ -23,7 +23,7 @@ pub enum KickTarget {
     /// A point on the pitch (m, global frame); for shots a point on the goal line. The AI aims so.
     Point(Vec2),
     /// A direction (unit, global frame): passes go to the best team-mate that way and shots at
-    /// the goal, chosen when the kick is made. Agents' buttons aim so (grf.md §5.4).
+    /// the goal, chosen when the kick is made. Agents' buttons aim so (docs/grf-compatibility.md#action-effects).
     Direction(Vec2),
 }
 

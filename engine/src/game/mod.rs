@@ -34,7 +34,8 @@ pub enum Phase {
     /// Ball in play (possibly a set piece waiting for its taker: see [`Match::mode`]).
     Play,
     /// Dead ball after a goal or the ball leaving the pitch; players walk to their places and the
-    /// restart is set up when `ticks_left` reaches 0. These ticks are not env steps (grf.md §7.1).
+    /// restart is set up when `ticks_left` reaches 0. These ticks are not env steps
+    /// (docs/grf-compatibility.md#time-base).
     Dead {
         /// Ticks until the restart is ready.
         ticks_left: u16,
@@ -56,7 +57,7 @@ pub struct Match {
     pub(crate) formations: [Vec<[f32; 2]>; 2],
     pub(crate) difficulty: [f32; 2],
     pub(crate) ball: Ball,
-    /// The scenario's ball start (m): the second half kicks off from it (grf.md §7.3).
+    /// The scenario's ball start (m): the second half kicks off from it (docs/grf-compatibility.md#half-time).
     pub(crate) ball_start: glam::Vec2,
     /// The team with a player nearest the ball at the start; the other kicks off the second half.
     pub(crate) first_kickoff: Side,
@@ -124,7 +125,8 @@ pub struct Match {
 impl Match {
     /// Sets up a match from a (validated) scenario for 0-based episode `episode`: players at their
     /// formation places, ball at its start, play on (GRF's initial kickoff counts as taken on the
-    /// first tick, grf.md §3.4). `seed` picks the random stream; deterministic scenarios use their `game_engine_random_seed` (42 by default).
+    /// first tick, docs/grf-compatibility.md#game-modes). `seed` picks the random stream; deterministic
+    /// scenarios use their `game_engine_random_seed` (42 by default).
     pub fn new(scenario: &Scenario, episode: u64, seed: u64) -> Match {
         Match::from_placement(scenario, scenario.draw(seed, episode), episode, seed)
     }
@@ -146,7 +148,8 @@ impl Match {
                 p.lazy = e.lazy;
                 p.controllable = e.controllable;
                 p.attributes = crate::player::Attributes::for_slot(i);
-                // Difficulty scales every stat (grf.md §7.6): top speed 8·(0.9 + 0.1·stat).
+                // Difficulty scales every stat (docs/grf-compatibility.md#controlled-players): top speed
+                // 8·(0.9 + 0.1·stat).
                 p.fresh_speed = crate::player::top_speed(p.skill(p.attributes.speed, difficulty[side.index()]));
                 p.max_speed = p.fresh_speed;
                 players.push(p);
@@ -392,8 +395,8 @@ impl Match {
         }
     }
 
-    /// Half-time (grf.md §7.3): fatigue is restored and the team that did not start with the ball
-    /// kicks off from the scenario's ball position, the two teams exchanging formations when they
+    /// Half-time (docs/grf-compatibility.md#half-time): fatigue is restored and the team that did not start
+    /// with the ball kicks off from the scenario's ball position, the two teams exchanging formations when they
     /// have as many players. Teams do not change ends, as in GRF.
     pub fn start_second_half(&mut self) {
         crate::rules::kickoff::set_up(self, self.first_kickoff.opponent());

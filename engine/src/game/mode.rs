@@ -1,4 +1,4 @@
-//! Game modes, numbered as GRF's `e_GameMode` (shared/reference/grf.md §3.4).
+//! Game modes, numbered as GRF's `e_GameMode` (docs/grf-compatibility.md#game-modes).
 
 use serde::{Deserialize, Serialize};
 

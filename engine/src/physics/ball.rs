@@ -9,7 +9,7 @@ use crate::geometry::pitch::{BALL_RADIUS, GRAVITY, RIM_HALF_LENGTH, RIM_HALF_WID
 /// Quadratic air drag coefficient k in a = -k·|v|·v (1/m), GRF's ball constant (GRF 2.10's
 /// engine; a football of 0.43 kg, 0.038 m² and Cd ≈ 0.25 gives ½ρCdA/m ≈ 0.013).
 pub const BALL_DRAG: f32 = 0.015;
-/// Restitution of a bounce on grass (GRF 0.62, grf.md §7.4).
+/// Restitution of a bounce on grass (GRF 0.62, docs/grf-compatibility.md#pitch-geometry).
 pub const BOUNCE_RESTITUTION: f32 = 0.62;
 /// Constant part of the rolling deceleration (m/s²), GRF's ground friction (GRF 2.10's engine).
 pub const ROLL_DECELERATION: f32 = 1.6;

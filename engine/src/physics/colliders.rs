@@ -26,7 +26,7 @@ impl Surface {
     /// (normal restitution, tangential velocity kept) on impact.
     pub fn response(self) -> (f32, f32) {
         match self {
-            // GRF's ball bounce factor 0.62 (grf.md §7.4); grass takes a little speed.
+            // GRF's ball bounce factor 0.62 (docs/grf-compatibility.md#pitch-geometry); grass takes a little speed.
             Surface::Ground => (0.62, 0.92),
             Surface::Post | Surface::Crossbar => (0.75, 0.95),
             // Nets absorb the ball so it drops and stays in the goal.

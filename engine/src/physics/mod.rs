@@ -9,5 +9,5 @@ pub use ball::{BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_QUAD
 pub use colliders::{PitchColliders, Surface};
 pub(crate) use player_motion::{MotionLimits, keep_inside_rim, move_player, separate_players};
 
-/// Length of one tick (s): 10 ms, GRF's physics step (grf.md §7.1).
+/// Length of one tick (s): 10 ms, GRF's physics step (docs/grf-compatibility.md#time-base).
 pub const TICK_SECONDS: f32 = 0.01;

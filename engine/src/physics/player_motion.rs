@@ -33,7 +33,7 @@ const TURN_SIN: f32 = 0.119_712_2;
 /// when he stands (a [`crate::game::PlayerInput`]'s velocity and look, after the match's caps).
 pub(crate) fn move_player(player: &mut Player, velocity: Vec2, look: Vec2, limits: MotionLimits, dt: f32) {
     let mut desired = velocity;
-    // Inputs that push a player further outside the pitch are dropped (grf.md §5.4).
+    // Inputs that push a player further outside the pitch are dropped (docs/grf-compatibility.md#action-effects).
     if player.position.x.abs() > HALF_LENGTH + 2.0 && desired.x * player.position.x > 0.0 {
         desired.x = 0.0;
     }

@@ -4,7 +4,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::game::ActionSet;
 
-/// How an [`crate::Env`] is driven (GRF's `create_environment` arguments, grf.md §1.1).
+/// How an [`crate::Env`] is driven (GRF's `create_environment` arguments,
+/// docs/grf-compatibility.md#create-environment).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct EnvConfig {

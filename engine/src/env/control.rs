@@ -1,4 +1,4 @@
-//! Which player each agent controller drives (grf.md §7.6).
+//! Which player each agent controller drives (docs/grf-compatibility.md#controlled-players).
 //!
 //! With as many controllers as controllable players the mapping is fixed: controller i drives the
 //! i-th controllable player. With fewer ("dynamic selection"), control follows the ball: to the

@@ -1,7 +1,7 @@
-//! Episode-end conditions evaluated after every step, in GRF's order (grf.md §7.2): a goal, the
-//! ball going out of play, a change of possession (each when the scenario asks), then the time
-//! limit, which truncates rather than terminates. Beyond GRF, the ends drills from a restart
-//! need: a keeper's save, a keeper holding the ball, the starting restart taken.
+//! Episode-end conditions evaluated after every step, in GRF's order
+//! (docs/grf-compatibility.md#episode-length): a goal, the ball going out of play, a change of possession
+//! (each when the scenario asks), then the time limit, which truncates rather than terminates. Beyond GRF,
+//! the ends drills from a restart need: a keeper's save, a keeper holding the ball, the starting restart taken.
 
 use crate::behaviour::Scope;
 use crate::game::{GameMode, Match};

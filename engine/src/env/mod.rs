@@ -1,5 +1,6 @@
 //! The RL episode around a [`Match`]: controllers, sticky actions, 10 ticks per step, rewards,
-//! end conditions and observations, with GRF's semantics (shared/reference/grf.md §5–§7).
+//! end conditions and observations, with GRF's semantics (docs/grf-compatibility.md#actions, #rewards,
+//! #time-base, #episode-length).
 
 mod config;
 mod control;
@@ -30,7 +31,7 @@ use crate::scenario::{Curriculum, Metric, Scenario};
 use end::EndTracker;
 use lessons::LessonProgress;
 
-/// Ticks of play per env step: 10 × 10 ms = 0.1 s (GRF `physics_steps_per_frame`, grf.md §7.1).
+/// Ticks of play per env step: 10 × 10 ms = 0.1 s (GRF `physics_steps_per_frame`, docs/grf-compatibility.md#time-base).
 pub const TICKS_PER_STEP: u32 = 10;
 /// Most ticks one step may simulate (play plus dead time), a guard against a stuck restart.
 const MAX_TICKS_PER_STEP: u32 = 2_000;

@@ -69,7 +69,8 @@ impl Env {
         }
         self.state.steps += 1;
         // GRF counts engine steps from the second env step (the first one also plays the
-        // kickoff whistle), so half-time follows env step `second_half + 1` (grf.md §7.2-7.3).
+        // kickoff whistle), so half-time follows env step `second_half + 1`
+        // (docs/grf-compatibility.md#episode-length, #half-time).
         if self.state.steps == self.scenario.second_half.saturating_add(1) {
             self.state.game.start_second_half();
         }
@@ -221,8 +222,8 @@ impl Env {
         }
     }
 
-    /// GRF's anti-stalling rule (grf.md §5.4): after 20 steps waiting at a set piece every agent
-    /// action becomes `short_pass`; after that, `idle`, except that the agent-controlled ball owner
+    /// GRF's anti-stalling rule (docs/grf-compatibility.md#action-effects): after 20 steps waiting at a set
+    /// piece every agent action becomes `short_pass`; after that, `idle`, except that the agent-controlled ball owner
     /// is made to run towards the opponents' goal (and after 30 steps back). `builtin_ai` is left
     /// alone: the built-in AI takes set pieces itself.
     fn anti_stalling(&self, i: usize, action: Action) -> Action {

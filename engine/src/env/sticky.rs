@@ -1,5 +1,5 @@
-//! Sticky actions (grf.md §5.3): a controller's held direction, sprint and dribble persist until
-//! released; pass, shot and sliding buttons last one step; `builtin_ai` hands the player to the
+//! Sticky actions (docs/grf-compatibility.md#sticky-actions): a controller's held direction, sprint and
+//! dribble persist until released; pass, shot and sliding buttons last one step; `builtin_ai` hands the player to the
 //! built-in AI until any other action arrives.
 //!
 //! Pass and shot buttons work as GRF's gauge (GRF 2.10's human controller): a button pressed in

@@ -1,5 +1,5 @@
 //! The only converter between engine metres and GRF's normalised coordinates, and between the
-//! global frame and a team's own frame (shared/reference/grf.md §2.2, §3.2).
+//! global frame and a team's own frame (docs/grf-compatibility.md#scenario-semantics, #coordinates).
 
 use glam::{Vec2, Vec3};
 use serde::{Deserialize, Serialize};
@@ -131,7 +131,7 @@ mod tests {
 
     #[test]
     fn reset_positions_match_grf_observations() {
-        // grf.md §2.4: academy_corner left LB (1, 0.42) is observed at (1.0110, 0.4268).
+        // docs/grf-compatibility.md#scenario-players: academy_corner left LB (1, 0.42) is observed at (1.0110, 0.4268).
         let p = world_to_obs(formation_to_world(Side::Left, 1.0, 0.42));
         assert!((p[0] - 1.0110).abs() < 1e-4 && (p[1] - 0.4268).abs() < 1e-4);
         // Right CB at (-0.75, 0.1) in its own frame is observed at (0.7583, -0.1016).

@@ -1,4 +1,4 @@
-//! Pitch dimensions in metres. Sources: shared/reference/grf.md §3.2 and §7.4 (GRF's engine
+//! Pitch dimensions in metres. Sources: docs/grf-compatibility.md#coordinates, #pitch-geometry (GRF's engine
 //! values), which follow the Laws of the Game (Law 1) with GRF's 110 m × 72 m pitch.
 //!
 //! Engine frame: origin at the centre spot, x towards the right team's goal, y across the pitch
@@ -12,7 +12,7 @@ pub const HALF_WIDTH: f32 = 36.0;
 pub const LINE_HALF_WIDTH: f32 = 0.06;
 /// Ball radius (m); a ball at rest on the grass has z = this.
 pub const BALL_RADIUS: f32 = 0.11;
-/// |x| beyond which the ball is wholly over a goal line (55 + 0.06 + 0.11 m, grf.md §7.4).
+/// |x| beyond which the ball is wholly over a goal line (55 + 0.06 + 0.11 m, docs/grf-compatibility.md#pitch-geometry).
 pub const GOAL_LINE_OUT_X: f32 = HALF_LENGTH + LINE_HALF_WIDTH + BALL_RADIUS;
 /// |y| beyond which the ball is wholly over a touchline (36.17 m).
 pub const TOUCH_LINE_OUT_Y: f32 = HALF_WIDTH + LINE_HALF_WIDTH + BALL_RADIUS;
@@ -36,7 +36,7 @@ pub const CENTRE_CIRCLE_RADIUS: f32 = 9.15;
 pub const RIM_HALF_LENGTH: f32 = 60.0;
 /// Half width including the rim (m).
 pub const RIM_HALF_WIDTH: f32 = 40.0;
-/// Goal-kick spot: 0.92 of the half length from the centre (50.6 m, grf.md §7.4).
+/// Goal-kick spot: 0.92 of the half length from the centre (50.6 m, docs/grf-compatibility.md#pitch-geometry).
 pub const GOAL_KICK_X: f32 = 0.92 * HALF_LENGTH;
 /// Where throw-ins are taken along the touchline, at most this far from the centre in x (54.4 m).
 pub const THROW_IN_MAX_X: f32 = 54.4;

@@ -1,13 +1,13 @@
 //! Observation encoders: pure functions of the match state writing into caller-owned buffers,
 //! with no allocation.
 //!
-//! | encoder | grf.md | shape | dtype | values |
+//! | encoder | docs/grf-compatibility.md | shape | dtype | values |
 //! |---|---|---|---|---|
-//! | [`RawObservation`] (`raw`) | §3.1 | dict of arrays | f32 / ints | positions x ∈ [-1.01, 1.01], y ∈ [-0.43, 0.43] |
-//! | [`encode_simple115v2`] (`simple115v2`) | §4.1 | `(115,)` | f32 | unbounded; players/ball in env units, one-hots 0/1, padding -1 |
-//! | [`encode_simple115`] (legacy `simple115`) | §4.1 | `(115,)` | f32 | as v2, right team shifted when the left has < 11 players |
-//! | [`encode_smm`] (Super Mini Map, `extracted`) | §4.2 | `(H, W, 4)`, default `(72, 96, 4)` | u8 | 0 or 255 |
-//! | [`FrameStack`] (`stacked=True`) | §4.4 | last axis × 4: `(460,)` or `(H, W, 16)` | as the frame | as the frame |
+//! | [`RawObservation`] (`raw`) | #raw-observation | dict of arrays | f32 / ints | positions x ∈ [-1.01, 1.01], y ∈ [-0.43, 0.43] |
+//! | [`encode_simple115v2`] (`simple115v2`) | #simple115 | `(115,)` | f32 | unbounded; players/ball in env units, one-hots 0/1, padding -1 |
+//! | [`encode_simple115`] (legacy `simple115`) | #simple115 | `(115,)` | f32 | as v2, right team shifted when the left has < 11 players |
+//! | [`encode_smm`] (Super Mini Map, `extracted`) | #smm | `(H, W, 4)`, default `(72, 96, 4)` | u8 | 0 or 255 |
+//! | [`FrameStack`] (`stacked=True`) | #frame-stacking | last axis × 4: `(460,)` or `(H, W, 16)` | as the frame | as the frame |
 //!
 //! Each encoder works on one controller's [`RawObservation`], which is already in that
 //! controller's frame ("left" = its own team; [`crate::Env::observations`] gives one per

@@ -1,5 +1,6 @@
-//! The raw observation (grf.md §3.1), one per controlled player, in that player's own frame: a
-//! right-team viewer sees the pitch turned by 180° with his team as "left" (grf.md §3.2).
+//! The raw observation (docs/grf-compatibility.md#raw-observation), one per controlled player, in that
+//! player's own frame: a right-team viewer sees the pitch turned by 180° with his team as "left"
+//! (docs/grf-compatibility.md#coordinates).
 
 use serde::{Deserialize, Serialize};
 

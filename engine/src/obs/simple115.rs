@@ -1,5 +1,5 @@
-//! The `simple115v2` and legacy `simple115` float vectors (grf.md §4.1): 115 `f32` per controller,
-//! computed from its [`RawObservation`] (already in the controller's own frame, so "left" is the
+//! The `simple115v2` and legacy `simple115` float vectors (docs/grf-compatibility.md#simple115): 115 `f32`
+//! per controller, computed from its [`RawObservation`] (already in the controller's own frame, so "left" is the
 //! controller's team).
 //!
 //! | index   | content                                                        |

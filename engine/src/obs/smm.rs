@@ -1,4 +1,4 @@
-//! The Super Mini Map, GRF's `extracted` representation (grf.md §4.2): a `uint8` image of shape
+//! The Super Mini Map, GRF's `extracted` representation (docs/grf-compatibility.md#smm): a `uint8` image of shape
 //! `(H, W, 4)` (row-major, index `(y * W + x) * 4 + channel`), default 72 × 96, computed from one
 //! controller's [`RawObservation`] (already in the controller's own frame).
 //!

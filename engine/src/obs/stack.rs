@@ -1,5 +1,5 @@
-//! Frame stacking (grf.md §4.4, GRF's `FrameStack(k=4)` behind `stacked=True`): the last `k`
-//! encoded observations concatenated along the last axis, oldest first.
+//! Frame stacking (docs/grf-compatibility.md#frame-stacking, GRF's `FrameStack(k=4)` behind `stacked=True`):
+//! the last `k` encoded observations concatenated along the last axis, oldest first.
 //!
 //! A frame is viewed as `(n_pixels, channels)`: an `(H, W, C)` Super Mini Map has `channels = C`
 //! and stacks to `(H, W, k·C)` with, per pixel, `[t-k+1 (C values), …, t-1, t]`; a flat `(115,)`

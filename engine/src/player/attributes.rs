@@ -1,5 +1,5 @@
-//! Per-slot player attributes (grf.md §7.7): GRF gives team slot i a fixed profile from its player
-//! database, the same for both teams, so slot 0 (normally the keeper) always has the keeper-like
+//! Per-slot player attributes (docs/grf-compatibility.md#player-stats): GRF gives team slot i a fixed profile
+//! from its player database, the same for both teams, so slot 0 (normally the keeper) always has the keeper-like
 //! profile. touchline keeps that rule with its own eleven profiles (GRF's database values are not
 //! copied): slots follow the order of GRF's 11-v-11 formations (GK, RM, CF, LB, CB, CB, RB, CM,
 //! CM, CM, LM). Scenarios with fewer players use the first slots.
@@ -15,14 +15,15 @@ pub fn difficulty_scale(theta: f32) -> f32 {
 }
 
 /// A player's abilities, each in [0, 1] (1 = the best). The team's difficulty θ and the player's
-/// fatigue scale them in play (grf.md §7.6): every stat is multiplied by (0.3 + 0.7·θ).
+/// fatigue scale them in play (docs/grf-compatibility.md#controlled-players): every stat is multiplied by
+/// (0.3 + 0.7·θ).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Attributes {
-    /// Top speed: 8 m/s · (0.9 + 0.1·speed) (grf.md §7.7).
+    /// Top speed: 8 m/s · (0.9 + 0.1·speed) (docs/grf-compatibility.md#player-stats).
     pub speed: f32,
     /// How quickly he reaches top speed: 6–8 m/s².
     pub acceleration: f32,
-    /// How slowly he tires: fatigue grows with (2 − stamina) (grf.md §7.7).
+    /// How slowly he tires: fatigue grows with (2 − stamina) (docs/grf-compatibility.md#player-stats).
     pub stamina: f32,
     /// Pass accuracy.
     pub passing: f32,

@@ -1,5 +1,5 @@
-//! Fatigue (grf.md §7.7): it grows with the distance a player runs, faster when sprinting and for
-//! players with less stamina, eases a little while he walks or stands, and is restored at each
+//! Fatigue (docs/grf-compatibility.md#player-stats): it grows with the distance a player runs, faster when
+//! sprinting and for players with less stamina, eases a little while he walks or stands, and is restored at each
 //! half's kickoff. A tired player is slower and less accurate. Observed as `tired_factor`.
 //!
 //! GRF takes `distance · 0.00003 · (2 − stamina) / 0.0554` off `fatigue_inv` every tick (0.0554
@@ -30,7 +30,7 @@ pub fn speed_factor(fatigue: f32) -> f32 {
 }
 
 /// Fraction of his accuracy a player keeps at fatigue `f`: GRF scales every stat by
-/// 0.7 + 0.3·(1 − f) (grf.md §7.6).
+/// 0.7 + 0.3·(1 − f) (docs/grf-compatibility.md#controlled-players).
 #[inline]
 pub fn skill_factor(fatigue: f32) -> f32 {
     1.0 - 0.3 * fatigue

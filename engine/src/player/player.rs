@@ -31,11 +31,12 @@ pub struct Player {
     pub cards: u8,
     /// Fatigue in [0, 0.99] (observed as `tired_factor`; 0 = fresh).
     pub fatigue: f32,
-    /// Top sprint speed now (m/s): his fresh top speed lowered by fatigue (grf.md §5.4, §7.6).
+    /// Top sprint speed now (m/s): his fresh top speed lowered by fatigue
+    /// (docs/grf-compatibility.md#action-effects, #controlled-players).
     pub max_speed: f32,
     /// Top sprint speed when fresh (m/s), from his speed attribute and the team's difficulty.
     pub fresh_speed: f32,
-    /// Abilities of his team slot (grf.md §7.7), before difficulty and fatigue.
+    /// Abilities of his team slot (docs/grf-compatibility.md#player-stats), before difficulty and fatigue.
     pub attributes: Attributes,
     /// Home position in the team's own frame (m), from the formation.
     pub home: Vec2,
@@ -66,11 +67,11 @@ pub struct Player {
     pub(crate) control_blocked: u16,
 }
 
-/// Walking speed (m/s) with a direction and no modifier (grf.md §5.4).
+/// Walking speed (m/s) with a direction and no modifier (docs/grf-compatibility.md#action-effects).
 pub const WALK_SPEED: f32 = 5.0;
-/// Sprint speed (m/s) of the fastest player (grf.md §5.4).
+/// Sprint speed (m/s) of the fastest player (docs/grf-compatibility.md#action-effects).
 pub const SPRINT_SPEED: f32 = 8.0;
-/// Speed with the dribble button held (m/s, grf.md §5.4).
+/// Speed with the dribble button held (m/s, docs/grf-compatibility.md#action-effects).
 pub const DRIBBLE_SPEED: f32 = 3.5;
 
 impl Player {
@@ -116,7 +117,7 @@ impl Player {
     }
 
     /// An ability after the team's difficulty and his fatigue: `stat · (0.3 + 0.7·θ) · (1 − 0.3·f)`
-    /// (grf.md §7.6), in [0, 1].
+    /// (docs/grf-compatibility.md#controlled-players), in [0, 1].
     #[inline]
     pub fn skill(&self, stat: f32, theta: f32) -> f32 {
         stat * super::difficulty_scale(theta) * super::fatigue::skill_factor(self.fatigue)
@@ -134,7 +135,7 @@ impl Player {
     }
 }
 
-/// Top sprint speed (m/s) for a velocity stat in [0, 1]: 8 · (0.9 + 0.1·stat) (grf.md §7.7).
+/// Top sprint speed (m/s) for a velocity stat in [0, 1]: 8 · (0.9 + 0.1·stat) (docs/grf-compatibility.md#player-stats).
 pub fn top_speed(stat: f32) -> f32 {
     SPRINT_SPEED * (0.9 + 0.1 * stat.clamp(0.0, 1.0))
 }

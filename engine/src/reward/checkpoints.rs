@@ -1,5 +1,5 @@
-//! Checkpoint reward (grf.md §6.2): the opponent half is cut into 10 zones by distance to the
-//! opponent goal; the first time a controlled player carries the ball into each zone pays 0.1. A
+//! Checkpoint reward (docs/grf-compatibility.md#checkpoint-reward): the opponent half is cut into 10 zones by
+//! distance to the opponent goal; the first time a controlled player carries the ball into each zone pays 0.1. A
 //! goal pays every checkpoint not yet collected, so a goal is always worth 2.0 in total.
 
 use crate::obs::RawObservation;

@@ -1,4 +1,4 @@
-//! Rewards with GRF's semantics (grf.md §6): Scoring (always on) and Checkpoints; and event
+//! Rewards with GRF's semantics (docs/grf-compatibility.md#rewards): Scoring (always on) and Checkpoints; and event
 //! rewards (`reward on …`), paid from the match's event stream.
 
 mod checkpoints;

@@ -1,5 +1,5 @@
-//! Scoring reward (grf.md §6.1): +1 when the left team scores, -1 when it concedes, from the change
-//! of the goal difference over the step. Right-team controllers get the negation.
+//! Scoring reward (docs/grf-compatibility.md#scoring-reward): +1 when the left team scores, -1 when it
+//! concedes, from the change of the goal difference over the step. Right-team controllers get the negation.
 
 /// The left team's scoring reward for a step that moved the goal difference from `before` to
 /// `after` (left goals minus right goals).

@@ -4,7 +4,7 @@
 //!   offence (red card); a second caution in the match is a sending-off. A sent-off player leaves
 //!   the field and is not replaced; if he was the goalkeeper, a team-mate takes his place in goal.
 //! - **When it triggers**: a foul (see [`super::fouls`]) with severity above 1.4 (yellow) or 2.0
-//!   (red) (grf.md §7.8).
+//!   (red) (docs/grf-compatibility.md#laws).
 //! - **Restart**: the foul's free kick or penalty kick. A sent-off player is inactive at once
 //!   (`active = False` in observations), stands off the field by the nearer touchline and takes no
 //!   further part. A team's last active player is never sent off. When the keeper is sent off,
@@ -12,7 +12,7 @@
 //!   and the keeper's place in the formation.
 //! - **GRF behaviour**: two yellows or a red send the player off 6 s later, never the last
 //!   active player of a team; a sent-off GK's formation entry goes to the first active player
-//!   (grf.md §7.8). Observations show `yellow_card` for any caution.
+//!   (docs/grf-compatibility.md#laws). Observations show `yellow_card` for any caution.
 //! - **Differences**: the player leaves at once instead of 6 s later.
 
 use glam::Vec2;
@@ -22,9 +22,9 @@ use crate::geometry::pitch::HALF_WIDTH;
 use crate::player::Role;
 use crate::stats::Event;
 
-/// Severity above which a foul is cautioned (grf.md §7.8).
+/// Severity above which a foul is cautioned (docs/grf-compatibility.md#laws).
 pub const YELLOW_SEVERITY: f32 = 1.4;
-/// Severity above which a foul is a sending-off (grf.md §7.8).
+/// Severity above which a foul is a sending-off (docs/grf-compatibility.md#laws).
 pub const RED_SEVERITY: f32 = 2.0;
 /// How far outside the touchline a sent-off player stands (m).
 const OFF_FIELD: f32 = 3.0;

@@ -4,7 +4,7 @@
 //!   defender, the attacking team restarts with a corner kick.
 //! - **When it triggers**: |x| > 55.17 m outside the goal, last touch by the defending team.
 //! - **Restart**: ball in the corner arc on the side where it went out, (±55, ±36) m
-//!   (grf.md §7.4); the nearest outfield attacker takes it.
+//!   (docs/grf-compatibility.md#pitch-geometry); the nearest outfield attacker takes it.
 //! - **GRF behaviour**: the same spot; game mode 4 until the taker plays the ball.
 //! - **Differences**: none known.
 

@@ -11,15 +11,15 @@
 //!   tackler comes from behind and falls with his tackling skill. *Sliding tackle*: the first
 //!   contact of a slide with the carrier or his ball is judged by a severity from its timing (ball
 //!   first or man first), whether it comes from behind, its speed, the tackler's skill and chance:
-//!   above 1.0 a foul, above 1.4 a yellow card, above 2.0 a red card (GRF's thresholds, grf.md
-//!   §7.8).
+//!   above 1.0 a foul, above 1.4 a yellow card, above 2.0 a red card (GRF's thresholds,
+//!   docs/grf-compatibility.md#laws).
 //! - **Restart**: outside the offender's penalty area the foul waits for the advantage: if the
 //!   fouled team still has the ball after 3 s play goes on; if the offenders win it first, or the
 //!   fouled team has lost it when the 3 s are up, a direct free kick at the foul's spot (see
 //!   [`super::free_kick`]). Inside it, a penalty kick at once (see [`super::penalty_kick`]).
 //! - **GRF behaviour**: standing-tackle fouls with advantage (cancelled if the victim's team
 //!   keeps possession more than 3 s); sliding severities with the thresholds above; fouls in the
-//!   box give penalties (grf.md §7.8).
+//!   box give penalties (docs/grf-compatibility.md#laws).
 //! - **Differences**: our severity formula is our own (GRF's mixes animation timing we do not
 //!   have); no advantage inside the penalty area; a goal or the ball going out during the
 //!   advantage ends it.
@@ -33,9 +33,9 @@ use crate::geometry::Side;
 use crate::player::Player;
 use crate::stats::Event;
 
-/// Ticks the referee waits to see whether the advantage comes (3 s, grf.md §7.8).
+/// Ticks the referee waits to see whether the advantage comes (3 s, docs/grf-compatibility.md#laws).
 pub const ADVANTAGE_TICKS: u16 = 300;
-/// Severity above which a challenge is a foul (grf.md §7.8).
+/// Severity above which a challenge is a foul (docs/grf-compatibility.md#laws).
 pub const FOUL_SEVERITY: f32 = 1.0;
 /// Chance per tick that a standing challenge trips the carrier, for a tackler of no skill from
 /// the front (less with skill, twice from behind).

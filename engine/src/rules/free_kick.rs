@@ -5,7 +5,7 @@
 //!   stay 9.15 m away until the ball is in play.
 //! - **When it triggers**: a whistled foul outside the offender's penalty area (see
 //!   [`super::fouls`]) or an offside (see [`super::offside`]).
-//! - **Restart**: ball at the spot clamped into ±0.95·55 m × ±0.95·36 m (grf.md §7.4); the
+//! - **Restart**: ball at the spot clamped into ±0.95·55 m × ±0.95·36 m (docs/grf-compatibility.md#pitch-geometry); the
 //!   nearest outfield player of the awarded team takes it; keepers go back to their lines and
 //!   opponents at least 9.15 m from the ball; game mode 3 until the taker plays the ball.
 //! - **GRF behaviour**: the same spot clamping and game mode.

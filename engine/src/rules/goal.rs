@@ -6,8 +6,8 @@
 //!   line half width 0.06 m + ball radius 0.11 m) during a tick, with |y| ≤ 3.7 m and z ≤ 2.5 m at
 //!   the crossing point.
 //! - **Restart**: kickoff by the team that conceded (see [`super::kickoff`]).
-//! - **GRF behaviour**: the same test on the segment between two ticks (grf.md §7.4); entering
-//!   through the side netting is rejected.
+//! - **GRF behaviour**: the same test on the segment between two ticks
+//!   (docs/grf-compatibility.md#pitch-geometry); entering through the side netting is rejected.
 //! - **Differences**: none known. Own goals count for the team whose goal was not breached, as in
 //!   GRF.
 

@@ -4,7 +4,8 @@
 //!   attacker, the defending team restarts with a goal kick.
 //! - **When it triggers**: |x| > 55.17 m outside the goal, last touch by the attacking team (or by
 //!   nobody).
-//! - **Restart**: ball at x = ±0.92·55 = ±50.6 m, y = 0 (grf.md §7.4); the goalkeeper takes it.
+//! - **Restart**: ball at x = ±0.92·55 = ±50.6 m, y = 0 (docs/grf-compatibility.md#pitch-geometry); the
+//!   goalkeeper takes it.
 //! - **GRF behaviour**: the same spot; game mode 2 until the keeper plays the ball.
 //! - **Differences**: none known.
 

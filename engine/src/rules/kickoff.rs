@@ -7,8 +7,9 @@
 //! - **Restart**: every player back to his formation place (clamped into his own half), the ball
 //!   on the centre spot. If the conceding team is not the one with a player nearest the ball and
 //!   both teams have as many players, the two teams exchange formations, so the kickoff formation
-//!   goes to the conceding team (grf.md §2.2). Play is on at once: the kickoff counts as taken on
-//!   the first tick, so game mode 1 is not seen by agents (grf.md §3.4).
+//!   goes to the conceding team (docs/grf-compatibility.md#scenario-semantics). Play is on at once: the
+//!   kickoff counts as taken on the first tick, so game mode 1 is not seen by agents
+//!   (docs/grf-compatibility.md#game-modes).
 //! - **GRF behaviour**: as above.
 //! - **Differences**: opponents of the kicking team are moved out of the centre circle (Law 8);
 //!   GRF leaves the receiving formation's forward 2.75 m from the ball.

@@ -11,7 +11,7 @@
 //!   (see [`super::free_kick`]).
 //! - **GRF behaviour**: the same: "at every ball touch the referee records attackers beyond the
 //!   defending offside line (excluding the toucher); if one of them is the next player to touch the
-//!   ball → free kick for the defenders at the offender's position" (grf.md §7.8).
+//!   ball → free kick for the defenders at the offender's position" (docs/grf-compatibility.md#laws).
 //! - **Differences**: positions are judged at the players' centres (GRF does the same); a save or
 //!   a deflection by a defender clears the note (the Law keeps the offence alive after a
 //!   deflection or save); every free kick may be scored directly.
@@ -25,7 +25,7 @@ use crate::player::Player;
 /// The offside line (team frame of the attackers, m along their attack) for attackers facing
 /// `defenders`, with the ball at `ball_x` (same frame): the second-last active defender, the ball
 /// or the halfway line, whichever is furthest forward. `None` when the defenders have one active
-/// player or none (no offside then, grf.md §7.8).
+/// player or none (no offside then, docs/grf-compatibility.md#laws).
 pub fn line(defenders: &[Player], attack_sign: f32, ball_x: f32) -> Option<f32> {
     let (mut last, mut second) = (f32::NEG_INFINITY, f32::NEG_INFINITY);
     let mut active = 0;

@@ -5,9 +5,10 @@
 //!   every other player outside the penalty area, behind the ball and at least 9.15 m from the
 //!   mark.
 //! - **When it triggers**: a foul (see [`super::fouls`]) whose spot lies in the offender's own
-//!   penalty area (16.5 m deep, |y| < 20.15 − 0.06 m, grf.md §7.8).
-//! - **Restart**: ball on the mark, 11 m from the goal line (±44 m, grf.md §7.4); the fouled
-//!   team's outfield player nearest the mark takes it; game mode 6 until he plays the ball.
+//!   penalty area (16.5 m deep, |y| < 20.15 − 0.06 m, docs/grf-compatibility.md#laws).
+//! - **Restart**: ball on the mark, 11 m from the goal line (±44 m,
+//!   docs/grf-compatibility.md#pitch-geometry); the fouled team's outfield player nearest the mark takes it;
+//!   game mode 6 until he plays the ball.
 //! - **GRF behaviour**: the same mark and mode (GRF's `tests/penalty` expects the ball at
 //!   x ≈ −0.809); keepers back to their lines.
 //! - **Differences**: the defending keeper stands 1.1 m in front of his line (where GRF puts keepers
@@ -23,7 +24,7 @@ use crate::geometry::pitch::{
 };
 use crate::geometry::{Side, TeamFrame};
 
-/// Keepers' depth at set pieces (grf.md §7.5).
+/// Keepers' depth at set pieces (docs/grf-compatibility.md#formations).
 const KEEPER_LINE_X: f32 = 0.98 * HALF_LENGTH;
 
 /// Whether a foul at `at` (m) by a player of `offender` is inside his own penalty area.

@@ -1,6 +1,6 @@
 //! Shared set-up of a set piece (goal kick, corner kick, throw-in, free kick; penalty kicks have
 //! their own in [`super::penalty_kick`]): ball on the spot, the taker at the ball holding it until he plays it, goalkeepers
-//! back on their lines (grf.md §7.5), opponents at least 9.15 m away (Laws 13, 16, 17).
+//! back on their lines (docs/grf-compatibility.md#formations), opponents at least 9.15 m away (Laws 13, 16, 17).
 
 use glam::Vec2;
 
@@ -9,7 +9,7 @@ use crate::game::{GameMode, Match};
 use crate::geometry::pitch::{BALL_RADIUS, CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 use crate::physics::Ball;
 
-/// Keepers go back to 0.98 of the half length at set pieces (grf.md §7.5).
+/// Keepers go back to 0.98 of the half length at set pieces (docs/grf-compatibility.md#formations).
 const KEEPER_LINE_X: f32 = 0.98 * HALF_LENGTH;
 
 pub(crate) fn set_up(m: &mut Match, restart: Restart) {

@@ -3,7 +3,7 @@
 //! - **Law**: when the whole ball passes over a touchline, play restarts with a throw-in for the
 //!   opponents of the player who last touched it, from where it left the field.
 //! - **When it triggers**: |y| > 36.17 m (touchline 36 m + 0.06 m + ball radius).
-//! - **Restart**: ball on the touchline at x clamped to ±54.4 m (grf.md §7.4); the nearest
+//! - **Restart**: ball on the touchline at x clamped to ±54.4 m (docs/grf-compatibility.md#pitch-geometry); the nearest
 //!   outfield player of the throwing team takes it and must pass.
 //! - **GRF behaviour**: the same spot and team; game mode 5 until the taker plays the ball.
 //! - **Differences**: the throw is modelled as a pass from the ground.

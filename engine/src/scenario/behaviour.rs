@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use super::condition::{CheckContext, Condition, Target};
 
-/// How a `pass_to` is played (grf.md §5.4's three passes).
+/// How a `pass_to` is played (docs/grf-compatibility.md#action-effects's three passes).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum PassKind {

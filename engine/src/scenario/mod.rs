@@ -1,7 +1,7 @@
 //! The engine's only input: a [`Scenario`], plain serde data.
 //!
-//! Every field of GRF's `ScenarioConfig` is here with GRF's default (shared/reference/grf.md §1.3,
-//! §2.2). Positions use GRF's normalised pitch coordinates: x in [-1, 1] from the left goal to the
+//! Every field of GRF's `ScenarioConfig` is here with GRF's default (docs/grf-compatibility.md#scenario-config,
+//! #scenario-semantics). Positions use GRF's normalised pitch coordinates: x in [-1, 1] from the left goal to the
 //! right goal, y in [-0.42, 0.42] (positive y towards the bottom of the screen). Players are given in
 //! their **own team's frame** (own goal at x = -1, attacking towards +1); the ball in the global frame.
 //! The scenario language compiles `.tl` text into this value; a compiled scenario is this value
@@ -47,7 +47,7 @@ pub struct Scenario {
     /// Human-readable description (the `.tl` file's doc comment).
     pub description: String,
     /// Episode length in env steps (GRF `game_duration`, default 3000 = 90 minutes). The episode
-    /// is truncated after `game_duration + 1` steps (grf.md §7.2).
+    /// is truncated after `game_duration + 1` steps (docs/grf-compatibility.md#episode-length).
     pub game_duration: u32,
     /// Fixed seed (42) and no noise: identical actions give identical outcomes (default false).
     pub deterministic: bool,
@@ -79,7 +79,7 @@ pub struct Scenario {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ball_random: Option<Spot>,
     /// When set, the ball starts here in odd episodes (the 2nd, 4th, … reset), as GRF's test
-    /// scenarios that branch on the episode number (grf.md §2.3).
+    /// scenarios that branch on the episode number (docs/grf-compatibility.md#scenario-settings).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub odd_episode_ball_position: Option<[f32; 2]>,
     /// When set, the ball's start in odd episodes is drawn from this at every reset (global frame)
@@ -93,7 +93,8 @@ pub struct Scenario {
     /// Right team's players, in observation order, in the right team's own frame.
     pub right_team: Vec<PlayerEntry>,
     /// GRF's per-episode formation swap: when true, the two player lists change sides on every
-    /// odd episode (the 2nd, 4th, … reset), so the kickoff formation alternates (grf.md §2.2).
+    /// odd episode (the 2nd, 4th, … reset), so the kickoff formation alternates
+    /// (docs/grf-compatibility.md#scenario-semantics).
     pub swap_teams_on_odd_episodes: bool,
     /// Constraints every drawn placement meets (bounded rejection sampling, see [`Scenario::draw`]).
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -153,7 +154,7 @@ pub struct PlayerEntry {
     /// are only its nominal value (the distribution's centre).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub random: Option<Spot>,
-    /// A lazy player only stands and reacts physically (grf.md §2.2).
+    /// A lazy player only stands and reacts physically (docs/grf-compatibility.md#scenario-semantics).
     #[serde(default)]
     pub lazy: bool,
     /// Whether an agent may ever control this player (default true).

@@ -1,8 +1,9 @@
 //! Randomised placements: values and points a scenario draws afresh at every reset.
 //!
-//! Units are GRF's normalised pitch coordinates (x in [-1, 1], y in [-0.42, 0.42]; grf.md §2.2). A
-//! player's spot is in its team's own frame, the ball's in the global frame. Draws come from the
-//! episode's placement stream (see [`Scenario::draw`](super::Scenario::draw)), so a seed fixes them.
+//! Units are GRF's normalised pitch coordinates (x in [-1, 1], y in [-0.42, 0.42];
+//! docs/grf-compatibility.md#scenario-semantics). A player's spot is in its team's own frame, the ball's in
+//! the global frame. Draws come from the episode's placement stream (see
+//! [`Scenario::draw`](super::Scenario::draw)), so a seed fixes them.
 
 use serde::{Deserialize, Serialize};
 

@@ -25,11 +25,11 @@ fn one() -> f32 {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum RewardKind {
-    /// GRF's SCORING: +1 for a goal scored, −1 for one conceded (grf.md §6.1).
+    /// GRF's SCORING: +1 for a goal scored, −1 for one conceded (docs/grf-compatibility.md#scoring-reward).
     Scoring,
     /// GRF's CHECKPOINTS: `count` zones in the opponent half, `value` each, the first time the
-    /// controlled player carries the ball into one; a goal pays the rest (grf.md §6.2; GRF uses
-    /// count 10, value 0.1).
+    /// controlled player carries the ball into one; a goal pays the rest
+    /// (docs/grf-compatibility.md#checkpoint-reward; GRF uses count 10, value 0.1).
     Checkpoints {
         /// Number of zones (1–100).
         count: u8,

@@ -79,8 +79,9 @@ impl Snapshot {
     /// queued first-time shot and blocked ball control (an agent's buttons at a loose ball);
     /// version 11 the end conditions' memory of a live shot and of the last game mode (`save`,
     /// `restart_taken`); version 12 each player's run when he asked for the kick he winds up
-    /// (a shot's difficulty depends on it).
-    pub const FORMAT_VERSION: u16 = 12;
+    /// (a shot's difficulty depends on it); version 13 drops the blocked ball control (a pass
+    /// asked for at a loose ball is queued like a shot).
+    pub const FORMAT_VERSION: u16 = 13;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {

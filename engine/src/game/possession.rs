@@ -296,11 +296,11 @@ impl Match {
         let mut best = None;
         let mut best_d2 = f32::INFINITY;
         for (g, p) in self.players.iter().enumerate() {
-            if !p.active || p.touch_cooldown > 0 || p.control_blocked > 0 {
+            if !p.active || p.touch_cooldown > 0 {
                 continue;
             }
-            if p.queued_shot.is_some_and(|(_, left)| left > super::tick::QUEUED_SHOT_WINDOW) {
-                // Still winding up the shot he asked for: he strikes the ball, not traps it.
+            if p.queued_kick.is_some_and(|(_, left)| left > super::tick::QUEUED_KICK_WINDOW) {
+                // Still winding up the kick he asked for: he strikes the ball, not traps it.
                 continue;
             }
             if self.agent_driven[g]
@@ -337,7 +337,7 @@ impl Match {
             }
             if self.agent_driven[g]
                 && self.possessor.is_none()
-                && p.queued_shot.is_none()
+                && p.queued_kick.is_none()
                 && resting_at(&ball, self.wanted_velocity(g))
             {
                 // An agent's player standing at the ball as it was placed at the start does not
@@ -380,10 +380,10 @@ impl Match {
             self.execute_kick(g, kick);
             return;
         }
-        if let Some((kick, _)) = self.players[g].queued_shot.take()
+        if let Some((kick, _)) = self.players[g].queued_kick.take()
             && !keeper_hands
         {
-            // An agent's shot asked for before he had the ball: struck at the first touch.
+            // An agent's kick asked for before he had the ball: struck at the first touch.
             self.players[g].kick_run = self.players[g].velocity;
             self.execute_kick(g, kick);
             return;

@@ -19,12 +19,9 @@ const KICK_COOLDOWN: u16 = 25;
 /// Wind-up of a shot and of a pass (ticks) before any turning (see `Match::wind_up_ticks`).
 const SHOT_WIND_UP: f32 = 17.0;
 const PASS_WIND_UP: f32 = 10.0;
-/// How long (ticks) after its wind-up an agent's shot asked for at a loose ball waits for his first
+/// How long (ticks) after its wind-up an agent's kick asked for at a loose ball waits for his first
 /// touch before it is forgotten (GRF's human controller buffers a command 1,000 ms).
-pub(crate) const QUEUED_SHOT_WINDOW: u16 = 100;
-/// How long (ticks) an agent's pass asked for at a loose ball not yet his keeps him from the ball
-/// (GRF 2.10, measured in academy_empty_goal: he takes it 36-44 env steps after the press).
-const CONTROL_BLOCKED_TICKS: u16 = 350;
+pub(crate) const QUEUED_KICK_WINDOW: u16 = 100;
 /// Within this distance (m) of a loose ball an agent's player steps to it by himself, whatever his
 /// stick says; beyond it he chases it only with his stick idle (GRF's automatic ball control: the
 /// academy drills' carriers start up to 1.4 m from the ball).
@@ -91,11 +88,10 @@ impl Match {
         for p in &mut self.players {
             p.touch_cooldown = p.touch_cooldown.saturating_sub(1);
             p.dive_ticks = p.dive_ticks.saturating_sub(1);
-            p.control_blocked = p.control_blocked.saturating_sub(1);
-            if let Some((kick, left)) = p.queued_shot {
+            if let Some((kick, left)) = p.queued_kick {
                 // Forgotten once someone has the ball, or a second after its wind-up if he has
                 // not reached the ball by then (GRF's 1,000 ms command buffer).
-                p.queued_shot = (loose && left > 1).then_some((kick, left - 1));
+                p.queued_kick = (loose && left > 1).then_some((kick, left - 1));
             }
         }
         if self.mode != GameMode::Normal {
@@ -159,14 +155,12 @@ impl Match {
                     self.players[g].pending_kick = Some((kick, ticks));
                     self.players[g].kick_run = self.players[g].velocity;
                 } else if self.owner.is_none() && self.agent_driven[g] && self.at_loose_ball(g) {
-                    // GRF's buttons at a loose ball not yet his: a shot waits for his first
-                    // touch, a pass fails and holds him for 3.5 s (measured, GRF 2.10).
-                    if kick.kind == KickKind::Shot {
-                        let ticks = self.wind_up_ticks(g, &kick);
-                        self.players[g].queued_shot = Some((kick, ticks + QUEUED_SHOT_WINDOW));
-                    } else {
-                        self.players[g].control_blocked = CONTROL_BLOCKED_TICKS;
-                    }
+                    // GRF's buttons at a loose ball not yet his: the kick, shot or pass, waits for
+                    // his first touch and is that touch (measured, GRF 2.10: a shot pressed at
+                    // env step 2-3 leaves 3 steps later, a pass 5 steps later, back to the keeper,
+                    // and his team never shows as the ball's owner).
+                    let ticks = self.wind_up_ticks(g, &kick);
+                    self.players[g].queued_kick = Some((kick, ticks + QUEUED_KICK_WINDOW));
                 }
                 // A kick is a one-tick request.
                 self.inputs[g].kick = None;
@@ -394,7 +388,7 @@ impl Match {
     /// he sprints after it (measured: after his own shot from the centre spot of academy_empty_goal
     /// stops short of the line, our CB with no direction pressed runs 45 m after it at 7.8 m/s).
     fn ball_control_step(&self, g: usize) -> Option<Vec2> {
-        if self.owner.is_some() || self.mode != GameMode::Normal || self.players[g].control_blocked > 0 {
+        if self.owner.is_some() || self.mode != GameMode::Normal {
             return None;
         }
         let ball = self.ball;
@@ -417,7 +411,7 @@ impl Match {
         }
         // A ball already at his feet he leaves be, unless he is on his way to it.
         if ball.position.z > 0.5
-            || (d2 < AT_FEET * AT_FEET && !me.controlling_ball && me.queued_shot.is_none())
+            || (d2 < AT_FEET * AT_FEET && !me.controlling_ball && me.queued_kick.is_none())
             || (ball.velocity.truncate() - me.velocity).length_squared() > 9.0
         {
             return None;

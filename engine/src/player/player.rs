@@ -56,15 +56,11 @@ pub struct Player {
     /// An agent's player is stepping to a loose ball by himself (GRF's automatic ball control).
     #[serde(default)]
     pub(crate) controlling_ball: bool,
-    /// A shot an agent asked for at a loose ball at his feet before he had it, and the ticks left:
-    /// struck at his first touch once its wind-up has passed, forgotten a second after that. He
-    /// never shows as the ball's owner.
+    /// A kick (shot or pass) an agent asked for at a loose ball at his feet before he had it, and
+    /// the ticks left: struck at his first touch once its wind-up has passed, forgotten a second
+    /// after that. He never shows as the ball's owner.
     #[serde(default)]
-    pub(crate) queued_shot: Option<(Kick, u16)>,
-    /// Ticks during which an agent's player, who asked for a pass at a loose ball before he had
-    /// it, cannot control the ball (GRF's pass command fails and holds his action).
-    #[serde(default)]
-    pub(crate) control_blocked: u16,
+    pub(crate) queued_kick: Option<(Kick, u16)>,
 }
 
 /// Walking speed (m/s) with a direction and no modifier (docs/grf-compatibility.md#action-effects).
@@ -98,8 +94,7 @@ impl Player {
             dive_ticks: 0,
             pending_kick: None,
             kick_run: Vec2::ZERO,
-            queued_shot: None,
-            control_blocked: 0,
+            queued_kick: None,
             controlling_ball: false,
         }
     }
@@ -130,8 +125,7 @@ impl Player {
         self.dive_ticks = 0;
         self.pending_kick = None;
         self.touch_cooldown = 0;
-        self.queued_shot = None;
-        self.control_blocked = 0;
+        self.queued_kick = None;
     }
 }
 

@@ -26,7 +26,7 @@ REPRESENTATIONS = ("simple115v2", "simple115", "extracted")
 
 def time_core(scenario: str, representation: str, actions: list[int]) -> float:
     """Seconds for len(actions) steps of the extension's Env, resetting at each episode end."""
-    env = CoreEnv(scenario, representation=representation, seed=0)
+    env = CoreEnv(scenario, touchline.EnvOptions(representation=representation), seed=0)
     env.reset()
     step, reset = env.step, env.reset
     start = time.perf_counter()

@@ -1,7 +1,7 @@
 //! What `Env` and `VectorEnv` share: an engine `Env` plus its observation encoder and frame
 //! stacks, with every buffer allocated once.
 
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use touchline_engine::obs::{FrameStack, encode_simple115, encode_simple115v2, encode_smm};
 use touchline_engine::{ActionSet, EngineError, Env, EnvConfig, Scenario, Snapshot, StepInfo, StepOutcome};
@@ -64,6 +64,54 @@ impl Representation {
     }
 }
 
+/// The Python `touchline.EnvOptions` (python/touchline/options.py), read field by field: how an
+/// env is made, as one value. The Python side has checked and normalised every field already;
+/// [`EnvArgs::parse`] checks them again, so that the extension's own `Env` and `VectorEnv` refuse
+/// a bad value whatever object they are given.
+#[derive(Clone, Debug, FromPyObject)]
+pub(crate) struct EnvOptions {
+    /// "raw", "simple115", "simple115v2", "extracted" (or "smm"), "pixels" or "pixels_gray".
+    #[pyo3(attribute)]
+    pub(crate) representation: String,
+    /// "scoring" or "scoring,checkpoints".
+    #[pyo3(attribute)]
+    pub(crate) rewards: String,
+    /// Stack the last 4 observations along the last axis.
+    #[pyo3(attribute)]
+    pub(crate) stacked: bool,
+    /// Left-team players the agent controls.
+    #[pyo3(attribute("number_of_left_players_agent_controls"))]
+    pub(crate) left_agents: usize,
+    /// Right-team players the agent controls.
+    #[pyo3(attribute("number_of_right_players_agent_controls"))]
+    pub(crate) right_agents: usize,
+    /// (width, height) of image observations, pixels.
+    #[pyo3(attribute)]
+    pub(crate) channel_dimensions: (usize, usize),
+    /// "default" or "v2".
+    #[pyo3(attribute)]
+    pub(crate) action_set: String,
+    /// Hot reload of the scenario file.
+    #[pyo3(attribute)]
+    pub(crate) watch: bool,
+}
+
+impl EnvOptions {
+    /// Reads `options`, a `touchline.EnvOptions` or any object with its attributes.
+    ///
+    /// # Errors
+    /// `TypeError` naming what is missing or of the wrong type.
+    pub(crate) fn read(options: &Bound<'_, PyAny>) -> PyResult<EnvOptions> {
+        options.extract::<EnvOptions>().map_err(|e| {
+            PyTypeError::new_err(format!(
+                "options must be a touchline.EnvOptions (or have its attributes), got {}: {}",
+                options.get_type().name().map_or_else(|_| "?".to_owned(), |n| n.to_string()),
+                e.value(options.py())
+            ))
+        })
+    }
+}
+
 /// Constructor arguments shared by `Env` and `VectorEnv`.
 #[derive(Clone, Debug)]
 pub(crate) struct EnvArgs {
@@ -78,19 +126,21 @@ pub(crate) struct EnvArgs {
 }
 
 impl EnvArgs {
-    #[expect(clippy::too_many_arguments, reason = "mirrors the Python keyword arguments one to one")]
-    pub(crate) fn parse(
-        py: Python<'_>,
-        scenario: &str,
-        representation: &str,
-        left_agents: usize,
-        right_agents: usize,
-        rewards: &str,
-        action_set: &str,
-        stacked: bool,
-        channel_dimensions: (usize, usize),
-        watch: bool,
-    ) -> PyResult<EnvArgs> {
+    /// Loads `scenario` (with its scripts) and checks `options`.
+    ///
+    /// # Errors
+    /// `ScenarioError` when the scenario or its scripts do not load; `ValueError` for a bad option.
+    pub(crate) fn parse(py: Python<'_>, scenario: &str, options: &EnvOptions) -> PyResult<EnvArgs> {
+        let EnvOptions {
+            representation,
+            rewards,
+            stacked,
+            left_agents,
+            right_agents,
+            channel_dimensions,
+            action_set,
+            watch,
+        } = options.clone();
         let spec = scenario;
         let (scenario, scripts, watch) = if watch {
             let watch = crate::watch::Watch::start(py, spec)?;
@@ -106,7 +156,7 @@ impl EnvArgs {
             .map_err(|e| crate::errors::script_errors(py, &e))?;
             (scenario, scripts, None)
         };
-        let representation = Representation::parse(representation, channel_dimensions)?;
+        let representation = Representation::parse(&representation, channel_dimensions)?;
         let mut checkpoints = false;
         let mut scoring = false;
         for term in rewards.split(',').map(str::trim).filter(|t| !t.is_empty()) {
@@ -123,7 +173,7 @@ impl EnvArgs {
         if !scoring {
             return Err(PyValueError::new_err("rewards must include \"scoring\" (as in GRF)"));
         }
-        let action_set = match action_set {
+        let action_set = match action_set.as_str() {
             "default" => ActionSet::Default,
             "v2" => ActionSet::V2,
             other => {

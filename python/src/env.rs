@@ -8,7 +8,7 @@ use touchline_engine::{Side, StepInfo};
 use touchline_render::{RenderOptions, Renderer, Scene};
 
 use crate::convert::raw_to_dict;
-use crate::core::{EnvArgs, EnvCore, ObsOut};
+use crate::core::{EnvArgs, EnvCore, EnvOptions, ObsOut};
 use crate::errors::{engine_error, guard};
 use crate::recording::Recording;
 
@@ -35,15 +35,9 @@ pub(crate) struct PyEnv {
 /// What an `Env` was made with (see [`PyEnv::__getnewargs_ex__`]).
 struct InitArgs {
     scenario: String,
-    representation: String,
-    left_agents: usize,
-    right_agents: usize,
-    rewards: String,
-    action_set: String,
+    /// The `touchline.EnvOptions` object itself, pickled with the env.
+    options: Py<PyAny>,
     seed: u64,
-    stacked: bool,
-    channel_dimensions: (usize, usize),
-    watch: bool,
 }
 
 /// Reads one action index per controller from an int, a sequence or a numpy array.
@@ -113,49 +107,14 @@ impl PyEnv {
 #[pymethods]
 impl PyEnv {
     #[new]
-    #[pyo3(signature = (scenario, *, representation = "simple115v2", left_agents = 1, right_agents = 0, rewards = "scoring", action_set = "default", seed = 0, stacked = false, channel_dimensions = (96, 72), watch = false))]
-    #[expect(clippy::too_many_arguments, reason = "Python keyword arguments")]
-    fn new(
-        py: Python<'_>,
-        scenario: &str,
-        representation: &str,
-        left_agents: usize,
-        right_agents: usize,
-        rewards: &str,
-        action_set: &str,
-        seed: u64,
-        stacked: bool,
-        channel_dimensions: (usize, usize),
-        watch: bool,
-    ) -> PyResult<PyEnv> {
+    #[pyo3(signature = (scenario, options, *, seed = 0))]
+    fn new(py: Python<'_>, scenario: &str, options: &Bound<'_, PyAny>, seed: u64) -> PyResult<PyEnv> {
         guard(|| {
-            let args = EnvArgs::parse(
-                py,
-                scenario,
-                representation,
-                left_agents,
-                right_agents,
-                rewards,
-                action_set,
-                stacked,
-                channel_dimensions,
-                watch,
-            )?;
+            let args = EnvArgs::parse(py, scenario, &EnvOptions::read(options)?)?;
             let core = EnvCore::new(&args, seed).map_err(engine_error)?;
             let scripts = args.scripts.clone();
             let watch = args.watch;
-            let init = InitArgs {
-                scenario: scenario.to_owned(),
-                representation: representation.to_owned(),
-                left_agents,
-                right_agents,
-                rewards: rewards.to_owned(),
-                action_set: action_set.to_owned(),
-                seed,
-                stacked,
-                channel_dimensions,
-                watch: watch.is_some(),
-            };
+            let init = InitArgs { scenario: scenario.to_owned(), options: options.clone().unbind(), seed };
             Ok(PyEnv { core, init, watch, actions: Vec::new(), renderer: None, scripts, recording: None })
         })
     }
@@ -369,16 +328,9 @@ impl PyEnv {
     fn __getnewargs_ex__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyTuple>, Bound<'py, PyDict>)> {
         let i = &self.init;
         let kwargs = PyDict::new(py);
-        kwargs.set_item("representation", &i.representation)?;
-        kwargs.set_item("left_agents", i.left_agents)?;
-        kwargs.set_item("right_agents", i.right_agents)?;
-        kwargs.set_item("rewards", &i.rewards)?;
-        kwargs.set_item("action_set", &i.action_set)?;
         kwargs.set_item("seed", i.seed)?;
-        kwargs.set_item("stacked", i.stacked)?;
-        kwargs.set_item("channel_dimensions", i.channel_dimensions)?;
-        kwargs.set_item("watch", i.watch)?;
-        Ok((PyTuple::new(py, [&i.scenario])?, kwargs))
+        let args = PyTuple::new(py, [i.scenario.clone().into_pyobject(py)?.into_any(), i.options.bind(py).clone()])?;
+        Ok((args, kwargs))
     }
 
     /// ... and the episode's state, so an unpickled env goes on where this one is (in another

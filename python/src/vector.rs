@@ -6,7 +6,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use touchline_engine::StepInfo;
 
-use crate::core::{Autoreset, EnvArgs, EnvCore, ObsOut};
+use crate::core::{Autoreset, EnvArgs, EnvCore, EnvOptions, ObsOut};
 use crate::errors::{engine_error, guard};
 use crate::worker::{Slot, Worker};
 use touchline_engine::EngineError;
@@ -209,41 +209,22 @@ impl PyVectorEnv {
 #[pymethods]
 impl PyVectorEnv {
     #[new]
-    #[pyo3(signature = (scenario, num_envs, *, num_threads = 0, representation = "simple115v2", left_agents = 1, right_agents = 0, rewards = "scoring", action_set = "default", seed = 0, stacked = false, channel_dimensions = (96, 72), autoreset_mode = "SameStep", watch = false))]
-    #[expect(clippy::too_many_arguments, reason = "Python keyword arguments")]
+    #[pyo3(signature = (scenario, num_envs, options, *, num_threads = 0, seed = 0, autoreset_mode = "SameStep"))]
     fn new(
         py: Python<'_>,
         scenario: &str,
         num_envs: usize,
+        options: &Bound<'_, PyAny>,
         num_threads: usize,
-        representation: &str,
-        left_agents: usize,
-        right_agents: usize,
-        rewards: &str,
-        action_set: &str,
         seed: u64,
-        stacked: bool,
-        channel_dimensions: (usize, usize),
         autoreset_mode: &str,
-        watch: bool,
     ) -> PyResult<PyVectorEnv> {
         guard(|| {
             let mode = Autoreset::parse(autoreset_mode)?;
             if num_envs == 0 {
                 return Err(PyValueError::new_err("num_envs must be at least 1"));
             }
-            let args = EnvArgs::parse(
-                py,
-                scenario,
-                representation,
-                left_agents,
-                right_agents,
-                rewards,
-                action_set,
-                stacked,
-                channel_dimensions,
-                watch,
-            )?;
+            let args = EnvArgs::parse(py, scenario, &EnvOptions::read(options)?)?;
             if args.representation == crate::core::Representation::Raw {
                 return Err(PyValueError::new_err(
                     "the raw representation has no vector form; use an array representation",

@@ -105,7 +105,7 @@ def test_render_rgb_array() -> None:
 
 
 def test_render_from_the_extension_and_compat() -> None:
-    core = touchline._touchline.Env(DRILL)
+    core = touchline._touchline.Env(DRILL, touchline.EnvOptions())
     assert core.render(320, 240).shape == (240, 320, 3)
     with pytest.raises(ValueError, match="between 1 and 8192"):
         core.render(0, 10)

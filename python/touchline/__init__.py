@@ -11,6 +11,8 @@ obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
 * `touchline.parallel_env(...)`: a PettingZoo `ParallelEnv` for several players, self-play included.
 * `touchline.vector.make(scenario, num_envs=N)`: N matches stepped in Rust threads.
 * `touchline.compat.gfootball.create_environment(...)`: GRF's function, for existing GRF code.
+* `touchline.EnvOptions(...)`: the envs' shared keyword arguments as one checked value
+  (`touchline.make(scenario, options=...)`).
 * `touchline.RecordReplay(env, folder)`: saves episodes as `.tlreplay` files for `touchline view`;
   `touchline.Replay(path)` reads one back and re-simulates it.
 * Errors: `touchline.TouchlineError`, and its subclass `touchline.ScenarioError` for a scenario
@@ -24,10 +26,12 @@ from ._touchline import Replay, ReplayError, ScenarioError, TouchlineError, scen
 from ._touchline import __version__ as __version__
 from .gymnasium_env import FootballEnv
 from .make import make, parallel_env
+from .options import EnvOptions
 from .record_replay import ParallelRecordReplay, RecordReplay
 from .registration import register_stdlib as _register_stdlib
 
 __all__ = [
+    "EnvOptions",
     "FootballEnv",
     "ParallelRecordReplay",
     "RecordReplay",

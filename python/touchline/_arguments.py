@@ -11,12 +11,15 @@ from __future__ import annotations
 import os
 import secrets
 import warnings
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from gymnasium import spaces
 
 from ._touchline import Env as _CoreEnv
+
+if TYPE_CHECKING:
+    from .options import EnvOptions
 
 #: Representations whose observations are arrays (Gymnasium and PettingZoo envs accept these);
 #: "pixels" and "pixels_gray" are frames drawn on the CPU (docs/grf-compatibility.md#pixels).
@@ -54,7 +57,7 @@ def representation_argument(representation: str, *, allow_raw: bool) -> str:
         raise ValueError(
             "representation='raw' returns a list of dicts, which has no Gymnasium space; use "
             "touchline.compat.gfootball.create_environment(..., representation='raw') or the "
-            "low-level touchline._touchline.Env(..., representation='raw'), or call "
+            "low-level touchline._touchline.Env(scenario, touchline.EnvOptions(representation='raw')), or call "
             "env.raw_observations() next to an array representation"
         )
     accepted = REPRESENTATIONS if allow_raw else ARRAY_REPRESENTATIONS
@@ -153,33 +156,10 @@ def render_mode_argument(render_mode: str | None) -> None:
         )
 
 
-def core_env(
-    scenario: str | os.PathLike[str],
-    *,
-    left_agents: int,
-    right_agents: int,
-    representation: str,
-    rewards: str,
-    action_set: str,
-    seed: int | None,
-    stacked: bool,
-    channel_dimensions: Any,
-    watch: bool = False,
-) -> _CoreEnv:
-    """The extension's `Env` from user arguments, each checked (and `representation` already
-    checked by the caller, who decides whether "raw" is allowed)."""
-    return _CoreEnv(
-        scenario_argument(scenario),
-        representation=representation,
-        left_agents=left_agents,
-        right_agents=right_agents,
-        rewards=rewards_argument(rewards),
-        action_set=action_set_argument(action_set),
-        seed=seed_argument(seed),
-        stacked=bool(stacked),
-        channel_dimensions=channel_dimensions_argument(channel_dimensions),
-        watch=watch_argument(watch),
-    )
+def core_env(scenario: str | os.PathLike[str], options: EnvOptions, seed: int | None) -> _CoreEnv:
+    """The extension's `Env` for `scenario`, made with `options` (checked when they were made;
+    whether "raw" is allowed is the caller's check) and `seed` (None: a random one)."""
+    return _CoreEnv(scenario_argument(scenario), options, seed=seed_argument(seed))
 
 
 def watch_argument(watch: Any) -> bool:

@@ -10,6 +10,8 @@ import numpy as np
 import numpy.typing as npt
 from typing_extensions import Self
 
+from touchline.options import EnvOptions
+
 __all__ = [
     "Env",
     "Replay",
@@ -56,37 +58,21 @@ class Env:
 
     Args:
         scenario: stdlib name, or the path of a `.tl` scenario or a compiled `.json` one.
-        representation: "raw", "simple115", "simple115v2", "extracted" (SMM), "pixels" (RGB
-            frames drawn on the CPU) or "pixels_gray".
-        left_agents / right_agents: players the agents control on each side.
-        rewards: "scoring" or "scoring,checkpoints".
-        action_set: "default" (19 actions) or "v2" (20, adds builtin_ai).
-        seed: seed of the first episode.
-        stacked: stack the last 4 observations along the last axis.
-        channel_dimensions: (width, height) of SMM observations.
-        watch: follow the scenario file, its imports and scripts: a change that loads is played
-            from the next reset (`scenario_version` counts them); one that does not is reported
-            by `watch_messages` and the last good version stays.
+        options: a `touchline.EnvOptions` (any object with its attributes): representation
+            ("raw" allowed here), rewards, stacked, the players the agents control on each side,
+            channel_dimensions, action_set and watch. With `watch`, the scenario file, its
+            imports and scripts are followed: a change that loads is played from the next reset
+            (`scenario_version` counts them); one that does not is reported by
+            `watch_messages` and the last good version stays.
+        seed: seed of the first episode, in [0, 2**64).
 
     Raises:
         ScenarioError: the scenario cannot be loaded, or `watch` names a stdlib scenario.
-        ValueError: bad arguments (unknown representation, too many agents, ...).
+        ValueError: bad options (unknown representation, too many agents, ...).
+        TypeError: `options` lacks one of `EnvOptions`'s attributes, or one has the wrong type.
     """
 
-    def __new__(
-        cls,
-        scenario: str,
-        *,
-        representation: str = "simple115v2",
-        left_agents: int = 1,
-        right_agents: int = 0,
-        rewards: str = "scoring",
-        action_set: str = "default",
-        seed: int = 0,
-        stacked: bool = False,
-        channel_dimensions: tuple[int, int] = ...,
-        watch: bool = False,
-    ) -> Self: ...
+    def __new__(cls, scenario: str, options: EnvOptions, *, seed: int = 0) -> Self: ...
     @property
     def num_controllers(self) -> int: ...
     @property
@@ -262,27 +248,20 @@ class Replay:
 class VectorEnv:
     """`num_envs` independent matches stepped in Rust threads with the GIL released.
 
-    Same arguments as `Env`, plus `num_envs`, `num_threads` (0 = one per core) and
-    `autoreset_mode` (Gymnasium's `AutoresetMode` value: "SameStep", "NextStep" or "Disabled");
-    seeds are `seed + i` for env i.
+    Same arguments as `Env` (an array representation only), plus `num_envs` (≥ 1),
+    `num_threads` (0 = one per core) and `autoreset_mode` (Gymnasium's `AutoresetMode` value:
+    "SameStep", "NextStep" or "Disabled"); seeds are `seed + i` for env i.
     """
 
     def __new__(
         cls,
         scenario: str,
         num_envs: int,
+        options: EnvOptions,
         *,
         num_threads: int = 0,
-        representation: str = "simple115v2",
-        left_agents: int = 1,
-        right_agents: int = 0,
-        rewards: str = "scoring",
-        action_set: str = "default",
         seed: int = 0,
-        stacked: bool = False,
-        channel_dimensions: tuple[int, int] = ...,
         autoreset_mode: str = "SameStep",
-        watch: bool = False,
     ) -> Self: ...
     def watch_messages(self) -> list[str]:
         """As `Env.watch_messages`, for every match (each message once)."""

@@ -11,6 +11,7 @@ from gymnasium import spaces
 
 from . import _arguments
 from ._touchline import Env as _CoreEnv
+from .options import EnvOptions
 from .recording import ReplayRecording
 
 
@@ -114,6 +115,9 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
     * `render_mode`: None or `"rgb_array"`: `render()` then returns the match drawn from above,
       a (720, 1280, 3) uint8 RGB frame with the scoreboard, made on the CPU (no display needed;
       Gymnasium's `RecordVideo` works with it).
+    * `options`: every argument but `scenario`, `seed` and `render_mode` as one
+      `touchline.EnvOptions`, used instead of those keyword arguments when given; the env's
+      `options` attribute holds the options it was made with, either way.
 
     ## Version History
 
@@ -135,39 +139,34 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
         action_set: str = "default",
         render_mode: str | None = None,
         watch: bool = False,
+        *,
+        options: EnvOptions | None = None,
     ) -> None:
         _arguments.render_mode_argument(render_mode)
+        if options is None:
+            options = EnvOptions(
+                representation=representation,
+                rewards=rewards,
+                stacked=stacked,
+                number_of_left_players_agent_controls=number_of_left_players_agent_controls,
+                number_of_right_players_agent_controls=number_of_right_players_agent_controls,
+                channel_dimensions=channel_dimensions,
+                action_set=action_set,
+                watch=watch,
+            )
+        options.array_only()
+        #: The options the env was made with (its keyword arguments, checked).
+        self.options = options
         # Kept to rebuild the env when it is unpickled.
         self._init_args: dict[str, Any] = {
             "scenario": scenario,
-            "representation": representation,
-            "rewards": rewards,
-            "stacked": stacked,
-            "number_of_left_players_agent_controls": number_of_left_players_agent_controls,
-            "number_of_right_players_agent_controls": number_of_right_players_agent_controls,
             "seed": seed,
-            "channel_dimensions": channel_dimensions,
-            "action_set": action_set,
             "render_mode": render_mode,
-            "watch": watch,
+            "options": options,
         }
-        left, right = _arguments.controls_argument(
-            number_of_left_players_agent_controls, number_of_right_players_agent_controls
-        )
         self.render_mode = render_mode
-        self._core = _arguments.core_env(
-            scenario,
-            left_agents=left,
-            right_agents=right,
-            representation=_arguments.representation_argument(representation, allow_raw=False),
-            rewards=rewards,
-            action_set=action_set,
-            seed=seed,
-            stacked=stacked,
-            channel_dimensions=channel_dimensions,
-            watch=watch,
-        )
-        self.representation = representation
+        self._core = _arguments.core_env(scenario, options, seed)
+        self.representation = options.representation
         # A scenario with control_all_players may give the agent more players than asked for.
         self.num_controllers: int = self._core.num_controllers
         self._single = self.num_controllers == 1

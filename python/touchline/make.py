@@ -6,6 +6,7 @@ import os
 from typing import TYPE_CHECKING
 
 from .gymnasium_env import FootballEnv
+from .options import EnvOptions
 
 if TYPE_CHECKING:
     from .pettingzoo_env import FootballParallelEnv
@@ -23,6 +24,8 @@ def make(
     action_set: str = "default",
     render_mode: str | None = None,
     watch: bool = False,
+    *,
+    options: EnvOptions | None = None,
 ) -> FootballEnv:
     """A `gymnasium.Env` playing `scenario` (a stdlib name, or the path of a `.tl` or compiled `.json`
     scenario file).
@@ -48,6 +51,8 @@ def make(
             version and warns once (`UserWarning` at the next `reset()`, with the rendered
             diagnostic). `info["scenario_version"]` says which version an episode plays: 1 for
             the file as first loaded, then the count of changes that loaded (0 without watch).
+        options: all of the above but `seed` and `render_mode` as one `touchline.EnvOptions`;
+            when given, it is used instead of those keyword arguments.
 
     Raises:
         touchline.ScenarioError: the scenario cannot be found or loaded (with `watch=True` too:
@@ -56,19 +61,18 @@ def make(
             misspelt one.
         ValueError: a bad argument.
     """
-    return FootballEnv(
-        scenario,
-        representation=representation,
-        rewards=rewards,
-        stacked=stacked,
-        number_of_left_players_agent_controls=number_of_left_players_agent_controls,
-        number_of_right_players_agent_controls=number_of_right_players_agent_controls,
-        seed=seed,
-        channel_dimensions=channel_dimensions,
-        action_set=action_set,
-        render_mode=render_mode,
-        watch=watch,
-    )
+    if options is None:
+        options = EnvOptions(
+            representation=representation,
+            rewards=rewards,
+            stacked=stacked,
+            number_of_left_players_agent_controls=number_of_left_players_agent_controls,
+            number_of_right_players_agent_controls=number_of_right_players_agent_controls,
+            channel_dimensions=channel_dimensions,
+            action_set=action_set,
+            watch=watch,
+        )
+    return FootballEnv(scenario, seed=seed, render_mode=render_mode, options=options)
 
 
 def parallel_env(
@@ -83,6 +87,8 @@ def parallel_env(
     action_set: str = "default",
     render_mode: str | None = None,
     watch: bool = False,
+    *,
+    options: EnvOptions | None = None,
 ) -> FootballParallelEnv:
     """A PettingZoo `ParallelEnv` with one agent per controlled player, on one or both teams.
 
@@ -93,16 +99,15 @@ def parallel_env(
     """
     from .pettingzoo_env import FootballParallelEnv
 
-    return FootballParallelEnv(
-        scenario,
-        number_of_left_players_agent_controls=number_of_left_players_agent_controls,
-        number_of_right_players_agent_controls=number_of_right_players_agent_controls,
-        representation=representation,
-        rewards=rewards,
-        stacked=stacked,
-        seed=seed,
-        channel_dimensions=channel_dimensions,
-        action_set=action_set,
-        render_mode=render_mode,
-        watch=watch,
-    )
+    if options is None:
+        options = EnvOptions(
+            representation=representation,
+            rewards=rewards,
+            stacked=stacked,
+            number_of_left_players_agent_controls=number_of_left_players_agent_controls,
+            number_of_right_players_agent_controls=number_of_right_players_agent_controls,
+            channel_dimensions=channel_dimensions,
+            action_set=action_set,
+            watch=watch,
+        )
+    return FootballParallelEnv(scenario, seed=seed, render_mode=render_mode, options=options)

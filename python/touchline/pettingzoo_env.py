@@ -11,6 +11,7 @@ from pettingzoo import ParallelEnv  # type: ignore[import-untyped]
 
 from . import _arguments
 from .gymnasium_env import reset_info
+from .options import EnvOptions
 from .recording import ReplayRecording
 
 
@@ -31,7 +32,8 @@ class FootballParallelEnv(ReplayRecording, ParallelEnv[str, np.ndarray, int]):  
     as in GRF's info), `steps_left`, `game_mode`, `score_reward` (left team's), `checkpoint_reward`,
     `event_reward` (the scenario's `reward on …` terms), `steps` and `episode`.
 
-    Build it with `touchline.parallel_env(...)`; the arguments are those of `touchline.make`.
+    Build it with `touchline.parallel_env(...)`; the arguments are those of `touchline.make`
+    (`options=` included; the `options` attribute holds them).
     """
 
     metadata: dict[str, Any] = {  # noqa: RUF012 (the base class declares it so)
@@ -54,25 +56,27 @@ class FootballParallelEnv(ReplayRecording, ParallelEnv[str, np.ndarray, int]):  
         action_set: str = "default",
         render_mode: str | None = None,
         watch: bool = False,
+        *,
+        options: EnvOptions | None = None,
     ) -> None:
         _arguments.render_mode_argument(render_mode)
-        left, right = _arguments.controls_argument(
-            number_of_left_players_agent_controls, number_of_right_players_agent_controls
-        )
+        if options is None:
+            options = EnvOptions(
+                representation=representation,
+                rewards=rewards,
+                stacked=stacked,
+                number_of_left_players_agent_controls=number_of_left_players_agent_controls,
+                number_of_right_players_agent_controls=number_of_right_players_agent_controls,
+                channel_dimensions=channel_dimensions,
+                action_set=action_set,
+                watch=watch,
+            )
+        options.array_only()
+        #: The options the env was made with (its keyword arguments, checked).
+        self.options = options
         self.render_mode = render_mode
-        self._core = _arguments.core_env(
-            scenario,
-            left_agents=left,
-            right_agents=right,
-            representation=_arguments.representation_argument(representation, allow_raw=False),
-            rewards=rewards,
-            action_set=action_set,
-            seed=seed,
-            stacked=stacked,
-            channel_dimensions=channel_dimensions,
-            watch=watch,
-        )
-        self.representation = representation
+        self._core = _arguments.core_env(scenario, options, seed)
+        self.representation = options.representation
         sides = list(self._core.controller_sides)
         counts = {"left": 0, "right": 0}
         names = []

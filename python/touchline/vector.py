@@ -21,6 +21,7 @@ from gymnasium.vector.utils import batch_space
 
 from . import _arguments
 from ._touchline import VectorEnv as _CoreVectorEnv
+from .options import EnvOptions
 
 __all__ = ["TouchlineVectorEnv", "make"]
 
@@ -75,6 +76,8 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         watch: hot reload, as in `touchline.make`: every match follows the scenario file and
             takes a change that loads at its next reset (its own, or an autoreset); a change
             that does not load warns once, at the next `reset` or `step`.
+        options: those options (all but `seed`) as one `touchline.EnvOptions`, used instead of
+            the keyword arguments when given; kept in the `options` attribute either way.
 
     Raises:
         ValueError: a bad argument, the raw representation (it has no array form) or a
@@ -104,28 +107,37 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         number_of_left_players_agent_controls: int = 1,
         number_of_right_players_agent_controls: int = 0,
         watch: bool = False,
+        *,
+        options: EnvOptions | None = None,
     ) -> None:
         if render_mode is not None:
             raise ValueError(
                 f"render_mode={render_mode!r} is not available for vector envs; render one env "
                 "with touchline.make(..., render_mode='rgb_array')"
             )
+        if options is None:
+            options = EnvOptions(
+                representation=representation,
+                rewards=rewards,
+                stacked=stacked,
+                number_of_left_players_agent_controls=number_of_left_players_agent_controls,
+                number_of_right_players_agent_controls=number_of_right_players_agent_controls,
+                channel_dimensions=channel_dimensions,
+                action_set=action_set,
+                watch=watch,
+            )
+        options.array_only()
+        #: The options the env was made with (its keyword arguments, checked).
+        self.options = options
         # Kept to rebuild the env when it is unpickled.
         self._init_args: dict[str, Any] = {
             "scenario": scenario,
             "num_envs": num_envs,
             "num_threads": num_threads,
-            "representation": representation,
-            "rewards": rewards,
-            "stacked": stacked,
             "seed": seed,
-            "channel_dimensions": channel_dimensions,
-            "action_set": action_set,
             "copy": copy,
             "autoreset_mode": autoreset_mode,
-            "number_of_left_players_agent_controls": number_of_left_players_agent_controls,
-            "number_of_right_players_agent_controls": number_of_right_players_agent_controls,
-            "watch": watch,
+            "options": options,
         }
         if (
             isinstance(num_envs, bool)
@@ -142,23 +154,13 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
                 f"num_threads must be a non-negative integer (0: one per core), got {num_threads!r}"
             )
         self.autoreset_mode = _autoreset_argument(autoreset_mode)
-        left, right = _arguments.controls_argument(
-            number_of_left_players_agent_controls, number_of_right_players_agent_controls
-        )
         self._core = _CoreVectorEnv(
             _arguments.scenario_argument(scenario),
             int(num_envs),
+            options,
             num_threads=int(num_threads),
-            representation=_arguments.representation_argument(representation, allow_raw=False),
-            left_agents=left,
-            right_agents=right,
-            rewards=_arguments.rewards_argument(rewards),
-            action_set=_arguments.action_set_argument(action_set),
             seed=_arguments.seed_argument(seed),
-            stacked=bool(stacked),
-            channel_dimensions=_arguments.channel_dimensions_argument(channel_dimensions),
             autoreset_mode=self.autoreset_mode.value,
-            watch=_arguments.watch_argument(watch),
         )
         #: Matches played side by side.
         self.num_matches = int(num_envs)
@@ -171,7 +173,7 @@ class TouchlineVectorEnv(gymnasium.vector.VectorEnv[np.ndarray, np.ndarray, np.n
         self.num_envs = n * m
         self.copy = bool(copy)
         self.render_mode = render_mode
-        self.representation = representation
+        self.representation = options.representation
         self.metadata = {"autoreset_mode": self.autoreset_mode, "render_modes": []}
         shape = tuple(self._core.observation_shape)
         self.single_observation_space = _arguments.observation_box(

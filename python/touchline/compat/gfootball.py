@@ -36,6 +36,7 @@ from gymnasium import spaces
 
 from .. import _arguments
 from .._touchline import Env as _CoreEnv
+from ..options import EnvOptions
 from .dumps import DumpWriter
 
 __all__ = ["FootballEnv", "create_environment"]
@@ -276,20 +277,16 @@ def create_environment(
             f"({', '.join(sorted(_DUMP_OPTIONS))}) and the display settings "
             f"({', '.join(sorted(_COSMETIC_OPTIONS))})"
         )
-    left, right = _arguments.controls_argument(
-        number_of_left_players_agent_controls, number_of_right_players_agent_controls
-    )
-    core = _arguments.core_env(
-        level,
-        left_agents=left,
-        right_agents=right,
+    env_options = EnvOptions(
         representation=representation,
         rewards=rewards,
-        action_set=action_set,
-        seed=seed,
         stacked=stacked,
+        number_of_left_players_agent_controls=number_of_left_players_agent_controls,
+        number_of_right_players_agent_controls=number_of_right_players_agent_controls,
         channel_dimensions=channel_dimensions,
+        action_set=action_set,
     )
+    core = _arguments.core_env(level, env_options, seed)
     dumps = DumpWriter(
         core,
         logdir,

@@ -24,11 +24,13 @@ if TYPE_CHECKING:
 #: Representations whose observations are arrays (Gymnasium and PettingZoo envs accept these);
 #: "pixels" and "pixels_gray" are frames drawn on the CPU (docs/grf-compatibility.md#pixels).
 ARRAY_REPRESENTATIONS = ("simple115v2", "simple115", "extracted", "pixels", "pixels_gray")
-#: Every representation the extension can encode; "raw" is a list of dicts (docs/grf-compatibility.md#raw-observation).
+#: Every representation the extension can encode; "raw" is a list of dicts
+#: (docs/grf-compatibility.md#raw-observation).
 REPRESENTATIONS = ("raw", *ARRAY_REPRESENTATIONS)
 #: Render modes of the Gymnasium and PettingZoo envs: `render()` returns an RGB array.
 RENDER_MODES = ("rgb_array",)
-#: Action sets (docs/grf-compatibility.md#action-sets): "default" has 19 actions, "v2" adds builtin_ai (20).
+#: Action sets (docs/grf-compatibility.md#action-sets): "default" has 19 actions, "v2" adds
+#: builtin_ai (20).
 ACTION_SETS = ("default", "v2")
 #: Reward terms (docs/grf-compatibility.md#rewards); "scoring" is always on.
 REWARD_TERMS = ("scoring", "checkpoints")
@@ -69,7 +71,8 @@ def representation_argument(representation: str, *, allow_raw: bool) -> str:
 
 
 def rewards_argument(rewards: str) -> str:
-    """GRF's comma-separated reward list (docs/grf-compatibility.md#rewards), normalised for the extension.
+    """GRF's comma-separated reward list (docs/grf-compatibility.md#rewards), normalised for the
+    extension.
 
     "scoring" must be present (GRF asserts it); "checkpoints" adds GRF's checkpoint reward.
     """
@@ -177,7 +180,8 @@ def show_watch_messages(core: Any) -> None:
 
 
 def observation_box(shape: tuple[int, ...], dtype: str) -> spaces.Box:
-    """The Box of one observation: float32 (-inf, inf) or uint8 [0, 255] (docs/grf-compatibility.md#simple115, #smm)."""
+    """The Box of one observation: float32 (-inf, inf) or uint8 [0, 255]
+    (docs/grf-compatibility.md#simple115, #smm)."""
     if dtype == "float32":
         return spaces.Box(-np.inf, np.inf, shape, np.float32)
     if dtype == "uint8":

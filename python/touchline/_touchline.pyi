@@ -120,7 +120,8 @@ class Env:
             RuntimeError: stepping after the episode ended (call reset).
         """
     def raw_observations(self) -> list[dict[str, Any]]:
-        """The raw observation of each controller (GRF's dict of numpy arrays, docs/grf-compatibility.md#raw-observation)."""
+        """The raw observation of each controller (GRF's dict of numpy arrays,
+        docs/grf-compatibility.md#raw-observation)."""
     def render(self, width: int = 1280, height: int = 720) -> npt.NDArray[np.uint8]:
         """The match drawn from above on the CPU: a (height, width, 3) uint8 RGB image with the
         scoreboard, every agent-driven player ringed in yellow.

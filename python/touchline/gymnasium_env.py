@@ -48,9 +48,10 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
     0 idle, 1 left, 2 top_left, 3 top, 4 top_right, 5 right, 6 bottom_right, 7 bottom, 8 bottom_left,
     9 long_pass, 10 high_pass, 11 short_pass, 12 shot, 13 sprint, 14 release_direction,
     15 release_sprint, 16 sliding, 17 dribble, 18 release_dribble. `action_set="v2"` adds
-    19 builtin_ai (`Discrete(20)`). Directions and sprint/dribble are sticky (docs/grf-compatibility.md#sticky-actions). With M > 1
-    controlled players the space is `MultiDiscrete([n] * M)`, left controllers first; a right-team
-    player's directions are in its own (rotated) frame.
+    19 builtin_ai (`Discrete(20)`). Directions and sprint/dribble are sticky
+    (docs/grf-compatibility.md#sticky-actions). With M > 1 controlled players the space is
+    `MultiDiscrete([n] * M)`, left controllers first; a right-team player's directions are in its
+    own (rotated) frame.
 
     ## Observation Space
 
@@ -68,24 +69,27 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
     | `pixels_gray` | (72, 96, 1) uint8 | the same frame in grey, 0.299 R + 0.587 G + 0.114 B |
 
     `stacked=True` stacks the last 4 observations along the last axis (115 → 460 floats, 4 → 16
-    channels, 3 → 12 for `pixels`; docs/grf-compatibility.md#frame-stacking). With M > 1 controlled players observations gain a leading axis of size M.
-    The space is `Box(-inf, inf)` for `simple115*` (as in GRF) and `Box(0, 255)` for `extracted` and `pixels*`.
-    `representation="raw"` is not accepted here (a list of dicts has no Box); use
-    `raw_observations()`, `touchline.compat.gfootball` or `touchline._touchline.Env`.
+    channels, 3 → 12 for `pixels`; docs/grf-compatibility.md#frame-stacking). With M > 1 controlled
+    players observations gain a leading axis of size M. The space is `Box(-inf, inf)` for
+    `simple115*` (as in GRF) and `Box(0, 255)` for `extracted` and `pixels*`. `representation="raw"`
+    is not accepted here (a list of dicts has no Box); use `raw_observations()`,
+    `touchline.compat.gfootball` or `touchline._touchline.Env`.
 
     ## Rewards
 
     `rewards="scoring"`: +1 when the left team scores, −1 when it concedes (a right-team controller
     gets the opposite). `"scoring,checkpoints"` adds GRF's checkpoint reward: 0.1 for each of 10
     distance rings around the opponent goal, collected while the controlled player owns the ball,
-    all paid at once on scoring (docs/grf-compatibility.md#rewards). With M > 1 controlled players, GRF returns one reward
-    per player; Gymnasium needs a float, so `reward` is the **mean** of the controllers' rewards and
-    `info["rewards"]` holds the float32 vector (M,). For self-play use `touchline.parallel_env`.
+    all paid at once on scoring (docs/grf-compatibility.md#rewards). With M > 1 controlled players,
+    GRF returns one reward per player; Gymnasium needs a float, so `reward` is the **mean** of the
+    controllers' rewards and `info["rewards"]` holds the float32 vector (M,). For self-play use
+    `touchline.parallel_env`.
 
     ## Starting State
 
-    The scenario's positions (GRF's tables, docs/grf-compatibility.md#scenario-players), drawn again at every reset where the
-    scenario randomises them. The first observation has `steps_left = game_duration + 1`.
+    The scenario's positions (GRF's tables, docs/grf-compatibility.md#scenario-players), drawn again
+    at every reset where the scenario randomises them. The first observation has
+    `steps_left = game_duration + 1`.
 
     ## Episode End
 
@@ -183,7 +187,8 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
         )
 
     def get_state(self) -> bytes:
-        """The whole state of the episode as bytes (GRF's `get_state`, docs/grf-compatibility.md#determinism).
+        """The whole state of the episode as bytes (GRF's `get_state`,
+        docs/grf-compatibility.md#determinism).
 
         The match (physics, players, referee, AI, random stream), sticky actions, reward and
         end-condition bookkeeping, episode counters and stacked frames: restoring it with
@@ -271,7 +276,8 @@ class FootballEnv(ReplayRecording, gymnasium.Env[np.ndarray, Any]):
         return observation, float(rewards.mean()), terminated, truncated, info
 
     def raw_observations(self) -> list[dict[str, Any]]:
-        """GRF's raw observation of each controlled player (a dict of numpy arrays, docs/grf-compatibility.md#raw-observation)."""
+        """GRF's raw observation of each controlled player (a dict of numpy arrays,
+        docs/grf-compatibility.md#raw-observation)."""
         return self._core.raw_observations()
 
     def render(self) -> np.ndarray | None:

@@ -20,17 +20,18 @@ class FootballParallelEnv(ReplayRecording, ParallelEnv[str, np.ndarray, int]):  
 
     Agents are named `left_0 … left_{L-1}` then `right_0 … right_{R-1}`. Every agent observes the
     match in its own frame — a right-team agent sees itself as the "left" team attacking +x
-    (docs/grf-compatibility.md#coordinates) — so one policy can play either side; its directional actions are read in that
-    frame too. Each agent's observation space is the single-player space of `touchline.make`
-    (`Box` (115,) float32 for `simple115v2`, (72, 96, 4) uint8 for `extracted`, ×4 on the last axis
-    when stacked) and its action space is `Discrete(19)` (20 with `action_set="v2"`).
+    (docs/grf-compatibility.md#coordinates) — so one policy can play either side; its directional
+    actions are read in that frame too. Each agent's observation space is the single-player space of
+    `touchline.make` (`Box` (115,) float32 for `simple115v2`, (72, 96, 4) uint8 for `extracted`, ×4
+    on the last axis when stacked) and its action space is `Discrete(19)` (20 with `action_set="v2"`).
 
-    Rewards follow GRF (docs/grf-compatibility.md#scoring-reward): every left agent gets the left team's scoring reward r, every
-    right agent gets −r; checkpoint rewards go to the agent that owns the ball. All agents end
-    together: `terminated` on the scenario's end conditions, `truncated` at the time limit, after
-    which `agents` is empty. `infos[agent]` carries `score` ([left, right], in the left team's frame
-    as in GRF's info), `steps_left`, `game_mode`, `score_reward` (left team's), `checkpoint_reward`,
-    `event_reward` (the scenario's `reward on …` terms), `steps` and `episode`.
+    Rewards follow GRF (docs/grf-compatibility.md#scoring-reward): every left agent gets the left
+    team's scoring reward r, every right agent gets −r; checkpoint rewards go to the agent that owns
+    the ball. All agents end together: `terminated` on the scenario's end conditions, `truncated` at
+    the time limit, after which `agents` is empty. `infos[agent]` carries `score` ([left, right], in
+    the left team's frame as in GRF's info), `steps_left`, `game_mode`, `score_reward` (left
+    team's), `checkpoint_reward`, `event_reward` (the scenario's `reward on …` terms), `steps` and
+    `episode`.
 
     Build it with `touchline.parallel_env(...)`; the arguments are those of `touchline.make`
     (`options=` included; the `options` attribute holds them).
@@ -185,7 +186,8 @@ class FootballParallelEnv(ReplayRecording, ParallelEnv[str, np.ndarray, int]):  
         """Nothing to release: the match is freed with the object."""
 
     def raw_observations(self) -> dict[str, dict[str, Any]]:
-        """GRF's raw observation of each agent (a dict of numpy arrays in its frame, docs/grf-compatibility.md#raw-observation)."""
+        """GRF's raw observation of each agent (a dict of numpy arrays in its frame,
+        docs/grf-compatibility.md#raw-observation)."""
         raw = self._core.raw_observations()
         return {agent: raw[i] for i, agent in enumerate(self.possible_agents)}
 

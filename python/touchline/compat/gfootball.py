@@ -9,12 +9,13 @@ obs, reward, done, info = env.step(env.action_space.sample())
 
 The returned env speaks the old gym API that GRF pins (gym 0.21): `reset()` returns the observation
 only and `step(action)` returns `(observation, reward, done, info)`, `done` being terminated or
-truncated. Observations are shaped as in GRF (docs/grf-compatibility.md#representations, #multi-agent): one controlled player gives
-`(115,)` or `(72, 96, 4)`, M players add a leading axis of size M, and `raw` is always a list of M
-dicts. The reward is a float for one player and a float32 array (M,) for several.
+truncated. Observations are shaped as in GRF (docs/grf-compatibility.md#representations,
+#multi-agent): one controlled player gives `(115,)` or `(72, 96, 4)`, M players add a leading axis
+of size M, and `raw` is always a list of M dicts. The reward is a float for one player and a float32
+array (M,) for several.
 
-`pixels` and `pixels_gray` are touchline's CPU-drawn top view (docs/grf-compatibility.md#pixels; `render=True` is
-accepted and changes nothing, since touchline draws on demand without a display), and
+`pixels` and `pixels_gray` are touchline's CPU-drawn top view (docs/grf-compatibility.md#pixels;
+`render=True` is accepted and changes nothing, since touchline draws on demand without a display), and
 `env.render(mode="rgb_array")` returns a 1280 × 720 RGB frame (GRF returns BGR there).
 
 GRF's dumps and videos (`write_full_episode_dumps`, `write_goal_dumps`, `write_video`,
@@ -200,7 +201,8 @@ def create_environment(
     channel_dimensions: tuple[int, int] = (96, 72),
     other_config_options: dict[str, Any] | None = None,
 ) -> FootballEnv:
-    """GRF's `create_environment` (docs/grf-compatibility.md#create-environment), with the same arguments and defaults.
+    """GRF's `create_environment` (docs/grf-compatibility.md#create-environment), with the same
+    arguments and defaults.
 
     Args:
         env_name: a stdlib scenario name (GRF's scenario module name) or the path of a `.tl` or

@@ -1,4 +1,4 @@
-//! Man marking, GRF's way (`grf-mechanisms.md` §6; GRF 2.10's team AI): every 400 ms a team
+//! Man marking, GRF's way (docs/grf-compatibility.md#team-ai; GRF 2.10's team AI): every 400 ms a team
 //! without the ball ranks the opponents by danger and gives each of the three most dangerous the
 //! outfield player best placed to mark him. A marker does not hunt the ball; he takes a place
 //! goal-side of his man, nearer than him to the point from which he would shoot: for the carrier

@@ -10,7 +10,7 @@ use crate::geometry::pitch::HALF_LENGTH;
 use crate::player::{Player, SPRINT_SPEED, difficulty_scale};
 
 /// Where presser `p` runs to close down `carrier` with the ball at `ball` (m, global). GRF's
-/// hunter (`grf-mechanisms.md` §4, §6): he runs at the ball only while he is not yet goal-side of
+/// hunter (docs/grf-compatibility.md#team-ai): he runs at the ball only while he is not yet goal-side of
 /// the carrier ([`needs_defending_movement`]); once he stands between the carrier and his goal,
 /// more than about 2.6 m off, he holds that line and waits for the carrier to come to him (GRF's
 /// defenders stand 3-6 m off an idle carrier and never dive in). Shared with the `press`
@@ -102,7 +102,7 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Diffic
     }
 }
 
-/// GRF's hunting of a carrier (`grf-mechanisms.md` §6): of the team's two outfield players
+/// GRF's hunting of a carrier (docs/grf-compatibility.md#team-ai): of the team's two outfield players
 /// nearest him, one within his hunting distance (markers are left out by [`plan`]) goes for the ball, while
 /// he is not yet goal-side of the carrier ([`needs_defending_movement`]). Everyone else holds the
 /// shape or his man, so a carrier is met by the defender in front of him only when he comes on.

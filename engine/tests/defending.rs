@@ -179,3 +179,40 @@ fn a_centre_back_through_on_goal_does_not_beat_the_keeper() {
     }
     assert!(conceded <= 1, "the centre back scored {conceded} times in 10");
 }
+
+/// A hard pass of the left team's at hip height, struck `gap` m in front of a standing right
+/// centre back and straight at him: the ball (position and velocity) once 80 ticks have passed,
+/// and who has it.
+fn hard_pass_at_a_standing_defender(gap: f32) -> (touchline_engine::physics::Ball, Option<(Side, usize)>) {
+    use touchline_engine::{PlayerEntry, Role};
+    let mut scenario = common::empty_pitch(400);
+    let mut cb = PlayerEntry::new(Role::CB, 0.5, 0.2);
+    cb.lazy = true;
+    scenario.right_team.push(cb);
+    let mut env = touchline_engine::Env::new(scenario, 0).unwrap();
+    let game = env.game_mut();
+    game.place_player(Side::Right, 1, glam::Vec2::new(0.0, -20.0));
+    game.place_ball(glam::Vec3::new(-gap, -20.0, 0.6), glam::Vec3::new(25.0, 0.0, 2.5), Some((Side::Left, 1)));
+    for _ in 0..80 {
+        game.tick();
+    }
+    (*game.ball(), game.owner())
+}
+
+#[test]
+fn a_hard_pass_goes_through_a_defender_it_reaches_late_and_meets_one_it_reaches_at_once() {
+    // GRF: a ball too fast to control (over 15 m/s relative) meets a player's body only in the
+    // 200 ms after an opponent touched it; later it runs on past him (academy_run_to_score: a
+    // back pass to the keeper is not cut out by the defenders chasing the carrier).
+    let (late, owner) = hard_pass_at_a_standing_defender(12.0);
+    assert_eq!(owner, None, "the defender 12 m away took the pass");
+    assert!(
+        late.position.x > 2.0 && late.velocity.x > 8.0,
+        "the pass struck 12 m from the defender did not run on past him: {late:?}"
+    );
+    let (soon, owner) = hard_pass_at_a_standing_defender(1.5);
+    assert!(
+        owner.is_some_and(|(side, _)| side == Side::Right) || soon.velocity.x < 10.0,
+        "the pass struck 1.5 m from the defender ran on past him: {soon:?}"
+    );
+}

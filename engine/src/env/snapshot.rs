@@ -80,8 +80,9 @@ impl Snapshot {
     /// version 11 the end conditions' memory of a live shot and of the last game mode (`save`,
     /// `restart_taken`); version 12 each player's run when he asked for the kick he winds up
     /// (a shot's difficulty depends on it); version 13 drops the blocked ball control (a pass
-    /// asked for at a loose ball is queued like a shot).
-    pub const FORMAT_VERSION: u16 = 13;
+    /// asked for at a loose ball is queued like a shot); version 14 the tick of the last touch of
+    /// the ball (a player's body blocks a fast ball only just after an opponent's touch).
+    pub const FORMAT_VERSION: u16 = 14;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {

@@ -76,6 +76,10 @@ pub struct Match {
     pub(crate) carry_distance: f32,
     /// Player who touched the ball last.
     pub(crate) last_touch: Option<usize>,
+    /// The in-play tick of that touch (a kick, trap, tackle or deflection, or the owner's carry
+    /// while he has the ball): a player's body blocks a ball only soon after an opponent touched
+    /// it (see `Match::control_loose_ball`).
+    pub(crate) touch_tick: u64,
     /// Player who last had the ball at his feet (cleared at kickoffs): a trap by an opponent of
     /// his is a [`Event::PossessionWon`].
     pub(crate) possessor: Option<usize>,
@@ -185,6 +189,7 @@ impl Match {
             in_hands: false,
             carry_distance: 0.5,
             last_touch: None,
+            touch_tick: 0,
             possessor: None,
             score: [0, 0],
             mode: GameMode::Normal,
@@ -420,6 +425,7 @@ impl Match {
         self.owner = None;
         self.owner_ticks = 0;
         self.last_touch = last_touch.map(|(side, i)| self.global_index(side, i));
+        self.touch_tick = self.in_play_ticks;
         self.possessor = None;
         self.offside_watch = Watch::default();
         self.pending_pass = None;

@@ -71,6 +71,9 @@ impl Match {
         self.move_ball();
         let owner_before = self.owner;
         self.settle_possession();
+        if self.owner.is_some() {
+            self.touch_tick = self.in_play_ticks;
+        }
         self.owner_ticks = if self.owner.is_some() && self.owner == owner_before { self.owner_ticks + 1 } else { 0 };
         if let Some(g) = self.owner.or(self.last_touch) {
             self.stats.teams[self.players[g].side.index()].possession_ticks += 1;
@@ -278,6 +281,7 @@ impl Match {
         let index = p.index;
         self.owner = None;
         self.last_touch = Some(g);
+        self.touch_tick = self.in_play_ticks;
         if kick.kind == KickKind::Shot {
             let on_target = rules::goal::on_target(&self.ball);
             self.record(Event::Shot { side, player: index, on_target });

@@ -158,6 +158,18 @@ def compare(case: dict[str, Any], episodes: list[dict[str, Any]]) -> list[fs.Fig
         for end in cases.ENDS:
             k = sum(e["end"] == end for e in episodes)
             figures.append(fs.proportion(f"ends {end}", ref["ends"][end], ref["n"], k, n))
+        if "keeper_active_share" in ref:
+            # Not among the figures: shown, never flagged (GRF hands control to a pass's
+            # target, its keeper too; docs/grf-compatibility.md#controlled-players).
+            shares = [e["keeper_active_share"] for e in episodes]
+            share = fs.info(
+                "keeper active share",
+                ref["keeper_active_share"][0],
+                statistics.fmean(shares),
+                fs.sample_se(shares),
+            )
+            share.note = "not among the issue's figures"
+            figures.append(share)
         others = sum(e["end"] == "other" for e in episodes)
         if others:  # done on none of GRF's four conditions: a touchline end GRF does not have
             figures.append(fs.info("ends other", 0.0, others / n))
@@ -181,6 +193,19 @@ def compare(case: dict[str, Any], episodes: list[dict[str, Any]]) -> list[fs.Fig
             figures.append(
                 fs.bound("max ball x", ref["max_ball_x"], max(e["max_ball_x"] for e in episodes))
             )
+        if "kicked" in ref:
+            kicked = [e for e in episodes if e["first_kick_step"] is not None]
+            figures.append(fs.proportion("P(kick)", ref["kicked"], ref["n"], len(kicked), n))
+            if "kick_speed" in ref and kicked:
+                speeds = [e["first_kick_speed"] for e in kicked]
+                figures.append(
+                    fs.near("kick speed m/s", ref["kick_speed"], speeds, KICK_SPEED_TOLERANCE)
+                )
+            after = [e["ball_x_after_kick"] for e in kicked if e["ball_x_after_kick"] is not None]
+            if "ball_x_after_kick" in ref and after:
+                figures.append(
+                    fs.near("ball x 25 steps on", ref["ball_x_after_kick"], after, BALL_X_TOLERANCE)
+                )
         if "steps_to_goal" in ref:
             steps = [e["first_goal_step"] for e in scored]
             figures.append(
@@ -232,7 +257,7 @@ def _number(value: float | None, digits: int) -> str:
 def _digits(figure: fs.Figure) -> int:
     if figure.kind == "proportion" or figure.name in ("max ball x", "possession"):
         return 3
-    if figure.name == "loose_share":
+    if figure.name in ("loose_share", "keeper active share", "ball x 25 steps on"):
         return 3
     return (
         1
@@ -358,6 +383,11 @@ def main(argv: list[str] | None = None) -> int:
         )
     return 0
 
+
+#: How far touchline's first kick speed (m/s) and ball x (raw units, about 2.75 m) may lie from a
+#: probe GRF repeats exactly.
+KICK_SPEED_TOLERANCE = 2.0
+BALL_X_TOLERANCE = 0.05
 
 SECTION_TITLES = {
     "academy": "Academy drills, random (n = 200) and idle (n = 50) [reference cases]",

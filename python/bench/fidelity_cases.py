@@ -16,6 +16,7 @@ they differ; the last known owner starts at -1 and is updated only on owned step
 from __future__ import annotations
 
 import copy
+import math
 import statistics
 import zlib
 from collections.abc import Callable
@@ -48,6 +49,15 @@ ENDS = ("goal", "out_of_play", "possession", "time_limit")
 METRES_PER_Y = 68.0 / 0.84
 #: Role index of a goalkeeper in `left_team_roles` / `right_team_roles`.
 GOALKEEPER_ROLE = 0
+#: Metres per second per unit of raw ball movement per step (55 m per unit of x, 0.1 s a step):
+#: the kick figures' scale, the same in both engines.
+SPEED_PER_UNIT_STEP = 550.0
+#: A kick: the ball's horizontal speed jumps by more than KICK_JUMP (m/s) in a step, to above
+#: KICK_SPEED (m/s); a dribble's touches stay below.
+KICK_JUMP = 4.0
+KICK_SPEED = 8.0
+#: Steps after the first kick at which `Episode.ball_x_after_kick` is read.
+AFTER_KICK = 25
 
 Observation = dict[str, Any]
 
@@ -303,6 +313,14 @@ class Episode:
     max_ball_x: float
     first_goal_step: int | None
     stats: dict[str, float] | None = None
+    #: The first kick: the step the ball's horizontal speed first jumps by more than
+    #: KICK_JUMP m/s to above KICK_SPEED m/s, that speed, and the ball's x AFTER_KICK steps later
+    #: (None when the episode ends first).
+    first_kick_step: int | None = None
+    first_kick_speed: float | None = None
+    ball_x_after_kick: float | None = None
+    #: Share of the steps on which our goalkeeper (player 0) was the controlled player.
+    keeper_active_share: float = 0.0
 
 
 def run_episode(
@@ -321,8 +339,12 @@ def run_episode(
         stats.start(obs)
     if on_step is not None:
         on_step(0, obs)
-    goals_for = goals_against = steps = 0
+    goals_for = goals_against = steps = keeper_steps = 0
     first_goal: int | None = None
+    kick_step: int | None = None
+    kick_speed: float | None = None
+    x_after_kick: float | None = None
+    speed = 0.0
     max_x = float(obs["ball"][0])
     end = "other"
     done = False
@@ -331,6 +353,13 @@ def run_episode(
         observations, reward, done, _ = env.step(policy.act(steps, obs))
         obs = observations[0]
         end = tracker.classify(obs, reward)
+        keeper_steps += int(obs["active"]) == 0
+        move = obs["ball_direction"]
+        previous, speed = speed, math.hypot(float(move[0]), float(move[1])) * SPEED_PER_UNIT_STEP
+        if kick_step is None and speed > KICK_SPEED and speed > previous + KICK_JUMP:
+            kick_step, kick_speed = steps, speed
+        if kick_step is not None and steps == kick_step + AFTER_KICK:
+            x_after_kick = float(obs["ball"][0])
         if reward > 0:
             goals_for += 1
             first_goal = first_goal or steps
@@ -349,6 +378,10 @@ def run_episode(
         max_ball_x=max_x,
         first_goal_step=first_goal,
         stats=stats.summary() if stats is not None else None,
+        first_kick_step=kick_step,
+        first_kick_speed=kick_speed,
+        ball_x_after_kick=x_after_kick,
+        keeper_active_share=keeper_steps / steps,
     )
 
 

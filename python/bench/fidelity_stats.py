@@ -9,8 +9,9 @@ A figure differs from GRF's (is flagged) when |Δ| > 3·sqrt(se_GRF² + se_touch
     of p̃, so that "0 in 5 matches" is not infinitely sure either;
   * an episode length is flagged only if it is ALSO more than 10 % off GRF's mean, since some GRF
     lengths have almost no spread (151.3 ± 0.1).
-A bound (GRF's probes gave a range, not an se) is flagged when touchline's value is beyond it; an
-`info` figure is shown and never flagged.
+A bound (GRF's probes gave a range, not an se) is flagged when touchline's value is beyond it; a
+`near` figure (a probe GRF repeats exactly) when touchline's mean is further from GRF's than its
+tolerance; an `info` figure is shown and never flagged.
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ class Figure:
     """GRF's value and touchline's, their standard errors, z and whether it is flagged."""
 
     name: str
-    kind: str  # proportion | mean | count | length | bound | info
+    kind: str  # proportion | mean | count | length | bound | near | info
     grf: float | None
     grf_se: float | None
     touchline: float
@@ -102,6 +103,24 @@ def mean(
 def bound(name: str, grf_bound: float, value: float) -> Figure:
     """A value GRF never exceeded in its episodes (no se given): flagged when touchline does."""
     return Figure(name, "bound", grf_bound, None, value, None, None, value > grf_bound, "GRF's max")
+
+
+def near(name: str, grf: float, values: Sequence[float], tolerance: float) -> Figure:
+    """A figure GRF gave without spread (a scripted probe that repeats exactly): flagged when
+    touchline's mean is further than `tolerance` from it."""
+    value = statistics.fmean(values)
+    flagged = abs(value - grf) > tolerance
+    return Figure(
+        name,
+        "near",
+        grf,
+        None,
+        value,
+        sample_se(values),
+        None,
+        flagged,
+        f"tolerance ±{tolerance:g}",
+    )
 
 
 def info(name: str, grf: float | None, value: float, tl_se: float | None = None) -> Figure:

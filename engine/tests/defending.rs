@@ -130,7 +130,8 @@ fn a_keeper_meeting_a_contested_loose_ball_clears_it_first_time() {
     for step in 0..60 {
         let out = env.step(&[Action::Idle]).unwrap();
         let o = &env.observations()[0];
-        assert_ne!(o.ball_owned_team, 1, "step {step}: the opponents' keeper took the ball");
+        // (When his clearance goes out, the episode ends with a throw-in's taker on the ball.)
+        assert!(o.ball_owned_team != 1 || out.terminated, "step {step}: the opponents' keeper took the ball");
         landed |= o.ball[2] < 0.5 && o.ball[0] < -0.1;
         if landed {
             highest_after_landing = highest_after_landing.max(o.ball[2]);

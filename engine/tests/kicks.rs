@@ -253,3 +253,23 @@ fn a_goal_does_not_end_a_drill_that_ends_on_out_of_play_only() {
         assert_eq!(env.info().game_mode, touchline_engine::GameMode::Normal, "step {step} after the goal");
     }
 }
+
+#[test]
+fn a_high_pass_asked_of_a_standing_player_facing_away_from_its_target_is_not_struck() {
+    // academy_run_to_score: our CB stands on the ball facing the opponents' goal; his only
+    // team-mate, the keeper, is straight behind him. GRF 2.10.2 (the harness's
+    // `_at_step_15` probes): a high pass pressed at env step 15 is never struck, while a long pass
+    // is, back to the keeper, 5 steps later.
+    for seed in 0..4 {
+        for (kind, struck) in [(Action::HighPass, false), (Action::LongPass, true)] {
+            let mut env = common::env("academy_run_to_score", seed);
+            play(&mut env, &[], 14);
+            let lay = env.observations()[0].ball;
+            let mut actions = vec![kind];
+            actions.resize(15, Action::Idle);
+            let (ball, _) = play(&mut env, &actions, 15);
+            let left = ball.iter().any(|b| (b[0] - lay[0]).abs() * 54.4 > 3.0);
+            assert_eq!(left, struck, "seed {seed}, {kind:?}: the ball left his feet: {left}");
+        }
+    }
+}

@@ -107,8 +107,8 @@ pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2
 const HIGH_PASS_TOUCH_SPEED: f32 = 33.0;
 
 /// GRF's high pass to a point `distance` m away along `dir` (GRF 2.10's auto pass and touch,
-/// docs/grf-compatibility.md#action-effects): with x = min(distance / 60 m, 1), power 1.15·x^1.4 and a lift of
-/// 0.45 − 0.15·x per unit of direction; the ball leaves at 36·(power + 0.3) m/s along that
+/// docs/grf-compatibility.md#action-effects): with x = min(distance / 60 m, 1), power 1.15·x^1.4
+/// and a lift of 0.45 − 0.15·x per unit of direction; the ball leaves at 36·(power + 0.3) m/s along that
 /// direction, capped at [`HIGH_PASS_TOUCH_SPEED`] with a quarter of the excess going up. A long
 /// one flies well beyond its target: GRF's high pass back to a keeper 52 m away lands behind his
 /// goal.

@@ -290,6 +290,23 @@ impl Match {
         self.take_ball(g);
     }
 
+    /// Whether a loose ball too fast for `g` to play still meets his body (and rebounds off it,
+    /// see [`Match::control_loose_ball`]). For an opponent of the player who touched it last,
+    /// only in the [`BODY_BLOCK_TICKS`] after that touch: GRF's ball passes through players
+    /// otherwise (its body-ball collision needs an opponent's touch in the last 200 ms), so a
+    /// chaser no longer cuts out a hard pass running away from him. A team-mate of the last
+    /// toucher always meets it, unlike in GRF: the rebound stands in for GRF's poor first touch
+    /// of a hard pass (letting team-mates' passes through measured 11-v-11 passes down from
+    /// about 50 to 39 a match, and back passes rolling into the goal).
+    fn blocks(&self, g: usize) -> bool {
+        match self.last_touch {
+            Some(t) if self.players[t].side != self.players[g].side => {
+                self.in_play_ticks.saturating_sub(self.touch_tick) <= BODY_BLOCK_TICKS
+            }
+            _ => true,
+        }
+    }
+
     /// The nearest player within reach of a loose ball traps, catches or deflects it.
     fn control_loose_ball(&mut self) {
         if self.unreachable_ticks > 0 {
@@ -342,14 +359,6 @@ impl Match {
             if ball.position.z > height {
                 continue;
             }
-            let relative = ball.velocity - p.velocity.extend(0.0);
-            let too_fast = !keeper_hands
-                && !p.is_sliding()
-                && (relative.length_squared() > TOUCH_SPEED * TOUCH_SPEED || relative.z.abs() > TOUCH_SPEED);
-            if too_fast && !self.blocks(g) {
-                // Too fast for him to play and not in his body's way: it goes past him.
-                continue;
-            }
             if self.agent_driven[g]
                 && self.possessor.is_none()
                 && p.queued_kick.is_none()
@@ -361,7 +370,16 @@ impl Match {
                 continue;
             }
             let d2 = from.distance_squared(ball.xy());
-            if d2 < reach * reach && d2 < best_d2 {
+            if d2 >= reach * reach || d2 >= best_d2 {
+                continue;
+            }
+            // Within reach (tested first: it is the cheap test): too fast for him to play and not
+            // in his body's way, it goes past him.
+            let relative = ball.velocity - p.velocity.extend(0.0);
+            let too_fast = !keeper_hands
+                && !p.is_sliding()
+                && (relative.length_squared() > TOUCH_SPEED * TOUCH_SPEED || relative.z.abs() > TOUCH_SPEED);
+            if !too_fast || self.blocks(g) {
                 best_d2 = d2;
                 best = Some((g, keeper_hands));
             }
@@ -446,25 +464,6 @@ impl Match {
         }
         self.ball.velocity = out;
         self.players[g].touch_cooldown = 15;
-    }
-}
-
-impl Match {
-    /// Whether a loose ball too fast for `g` to play still meets his body (and rebounds off it,
-    /// see [`Match::control_loose_ball`]). For an opponent of the player who touched it last,
-    /// only in the [`BODY_BLOCK_TICKS`] after that touch: GRF's ball passes through players
-    /// otherwise (its body-ball collision needs an opponent's touch in the last 200 ms), so a
-    /// chaser no longer cuts out a hard pass running away from him. A team-mate of the last
-    /// toucher always meets it, unlike in GRF: the rebound stands in for GRF's poor first touch
-    /// of a hard pass (letting team-mates' passes through measured 11-v-11 passes down from
-    /// about 50 to 39 a match, and back passes rolling into the goal).
-    fn blocks(&self, g: usize) -> bool {
-        match self.last_touch {
-            Some(t) if self.players[t].side != self.players[g].side => {
-                self.in_play_ticks.saturating_sub(self.touch_tick) <= BODY_BLOCK_TICKS
-            }
-            _ => true,
-        }
     }
 }
 

@@ -120,7 +120,7 @@ fn event_rewards(c: &mut Criterion) {
 /// The evaluator alone: ten terms for one controller over three events and the state checks.
 fn pay(c: &mut Criterion) {
     let events = [
-        Event::Pass { side: Side::Left, player: 4 },
+        Event::Pass { side: Side::Left, player: 4, to: Some(7) },
         Event::PassCompleted { side: Side::Left, player: 4 },
         Event::Shot { side: Side::Right, player: 9, on_target: false },
     ];

@@ -103,7 +103,7 @@ fn pass_to_reaches_the_team_mate() {
     let (mut passed, mut received) = (false, false);
     for _ in 0..80 {
         env.step(&[]).unwrap();
-        passed |= env.game().events().iter().any(|e| matches!(e, Event::Pass { side: Side::Left, player: 1 }));
+        passed |= env.game().events().iter().any(|e| matches!(e, Event::Pass { side: Side::Left, player: 1, .. }));
         if passed && env.game().owner() == Some((Side::Left, 2)) {
             received = true;
             break;

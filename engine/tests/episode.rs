@@ -4,7 +4,7 @@
 
 mod common;
 
-use touchline_engine::{Action, EngineError, Env, EnvConfig, GameMode, Side};
+use touchline_engine::{Action, EngineError, Env, EnvConfig, Event, GameMode, Side};
 
 #[test]
 fn steps_left_and_the_time_limit_follow_grf() {
@@ -153,7 +153,7 @@ fn out_of_play_ends_an_academy_episode() {
 }
 
 #[test]
-fn single_agent_control_never_goes_to_the_keeper() {
+fn single_agent_control_goes_to_the_keeper_only_with_a_pass_meant_for_him() {
     let mut env = common::env("11_vs_11_easy_stochastic", 2);
     let mut policy = common::RandomPolicy::new(9);
     let mut switches = 0;
@@ -161,7 +161,11 @@ fn single_agent_control_never_goes_to_the_keeper() {
     for _ in 0..1500 {
         let out = env.step(&[policy.action(env.action_set())]).unwrap();
         let o = &env.observations()[0];
-        assert!(o.active >= 1, "the keeper (index 0) was selected");
+        if o.active == 0 && last != 0 {
+            let to_keeper =
+                env.game().events().iter().any(|e| matches!(e, Event::Pass { side: Side::Left, to: Some(0), .. }));
+            assert!(to_keeper, "the keeper (index 0) was selected without a pass meant for him");
+        }
         assert_eq!(o.designated, o.active);
         if o.active != last {
             switches += 1;
@@ -175,6 +179,44 @@ fn single_agent_control_never_goes_to_the_keeper() {
         }
     }
     assert!(switches > 5, "control should follow the ball ({switches} switches)");
+}
+
+#[test]
+fn a_pass_hands_control_to_the_team_mate_it_is_meant_for_the_keeper_too() {
+    // academy_empty_goal: our CB on the centre spot, our keeper the only team-mate. GRF 2.10
+    // (measured): the pass goes back to the keeper and control goes with it as it is played.
+    let mut env = common::env("academy_empty_goal", 1);
+    for _ in 0..5 {
+        env.step(&[Action::Idle]).unwrap();
+    }
+    for step in 0..20 {
+        env.step(&[Action::ShortPass]).unwrap();
+        let passed = env.game().events().iter().any(|e| matches!(e, Event::Pass { side: Side::Left, to: Some(0), .. }));
+        assert_eq!(env.observations()[0].active == 0, passed, "step {step}: control goes with the pass, not before");
+        if passed {
+            return;
+        }
+    }
+    panic!("no pass in 20 steps");
+}
+
+#[test]
+fn the_agents_player_first_to_a_loose_ball_runs_to_it_whatever_his_stick_says() {
+    // academy_empty_goal: our CB shoots from the centre spot and then holds the stick towards his
+    // own goal. He is the first to the ball, so GRF's magnet runs him after it (GRF 2.10,
+    // measured: after a shot that stops short of the line he runs 45 m after it).
+    let mut env = common::env("academy_empty_goal", 1);
+    for _ in 0..5 {
+        env.step(&[Action::Idle]).unwrap();
+    }
+    env.step(&[Action::Shot]).unwrap();
+    let x = env.observations()[0].left_team[1][0];
+    for _ in 0..20 {
+        env.step(&[Action::Left]).unwrap();
+    }
+    let o = &env.observations()[0];
+    assert_eq!(o.ball_owned_team, -1);
+    assert!(o.left_team[1][0] > x + 0.1, "he runs after the ball: x {x} -> {}", o.left_team[1][0]);
 }
 
 #[test]

@@ -2,16 +2,34 @@
 //!
 //! With as many controllers as controllable players the mapping is fixed: controller i drives the
 //! i-th controllable player. With fewer ("dynamic selection"), control follows the ball: to the
-//! team's designated player when he has the ball or takes a set piece, or when he could reach the
-//! ball more than three times sooner than the controlled player farthest from it. Goalkeepers are
-//! never selected automatically.
+//! team-mate a pass is meant for as it is played (the goalkeeper too), and to the team's
+//! designated player when he has the ball or takes a set piece, or when he could reach the ball
+//! more than three times sooner than the controlled player farthest from it (never the
+//! goalkeeper). Times to the ball are along its predicted path, as GRF's time needed to get to
+//! the ball: a player behind a pass that runs away from him is far from it.
 
+use std::cell::OnceCell;
+
+use crate::ai::BallPath;
 use crate::game::Match;
 use crate::geometry::Side;
+use crate::stats::Event;
+
+/// Highest ball (m) that counts as reached in the time-to-ball estimate (head height).
+const REACH_HEIGHT: f32 = 2.0;
+
+/// The ball's predicted path, worked out when first needed (most steps a team's ball carrier
+/// is simply kept under control and it never is).
+pub(crate) type LazyPath = OnceCell<BallPath>;
+
+/// Seconds `p` needs to get to the ball on its predicted `path`.
+fn time_to_ball(game: &Match, path: &LazyPath, p: &crate::player::Player) -> f32 {
+    path.get_or_init(|| BallPath::predict(game.ball())).intercept(p.position, p.max_speed.max(0.1), REACH_HEIGHT).0
+}
 
 /// The player of `side` the team would hand control to: the ball owner if he is on this team,
 /// else the player nearest the ball in time (goalkeepers only when no one else can be controlled).
-pub(crate) fn designated(game: &Match, side: Side) -> Option<usize> {
+pub(crate) fn designated(game: &Match, side: Side, path: &LazyPath) -> Option<usize> {
     let team = game.team(side);
     if let Some((s, i)) = game.owner()
         && s == side
@@ -19,8 +37,7 @@ pub(crate) fn designated(game: &Match, side: Side) -> Option<usize> {
     {
         return Some(i);
     }
-    let ball = game.ball().xy();
-    let time = |i: usize| team[i].position.distance(ball) / team[i].max_speed.max(0.1);
+    let time = |i: usize| time_to_ball(game, path, &team[i]);
     let any_outfield = (0..team.len()).any(|i| selectable(game, side, i));
     (0..team.len())
         .filter(|&i| team[i].active && team[i].controllable && (!any_outfield || !team[i].is_keeper()))
@@ -62,13 +79,31 @@ pub(crate) fn update(game: &Match, side: Side, controlled: &mut [usize], fixed: 
     if fixed || controlled.is_empty() {
         return;
     }
-    let Some(d) = designated(game, side) else { return };
+    let team = game.team(side);
+    let path = LazyPath::new();
+    let time = |i: usize| time_to_ball(game, &path, &team[i]);
+    // A pass played this step: control goes to the team-mate it is meant for, the goalkeeper
+    // included (GRF selects the target player as the ball leaves), from the passer if he had it.
+    let pass = game.events().iter().rev().find_map(|e| match *e {
+        Event::Pass { side: s, player, to: Some(to), .. } if s == side => Some((player, to)),
+        _ => None,
+    });
+    if let Some((passer, to)) = pass
+        && team[to].active
+        && team[to].controllable
+    {
+        if !controlled.contains(&to) {
+            let slot = controlled.iter().position(|&c| c == passer).unwrap_or_else(|| {
+                (0..controlled.len()).max_by(|&a, &b| time(controlled[a]).total_cmp(&time(controlled[b]))).unwrap_or(0)
+            });
+            controlled[slot] = to;
+        }
+        return;
+    }
+    let Some(d) = designated(game, side, &path) else { return };
     if controlled.contains(&d) {
         return;
     }
-    let team = game.team(side);
-    let ball = game.ball().xy();
-    let time = |i: usize| team[i].position.distance(ball) / team[i].max_speed.max(0.1);
     // The controlled player who is worst placed gives up control.
     let (slot, worst) = controlled
         .iter()

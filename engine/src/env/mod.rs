@@ -463,10 +463,9 @@ impl Env {
         let steps_left = self.steps_left();
         for i in 0..self.state.controllers.len() {
             let c = self.state.controllers[i];
-            let designated = control::designated(&self.state.game, c.side);
             let active = Some(self.state.controlled[i]);
             let designated = if self.fixed_control[c.side.index()] || self.controller_span(c.side).1 > 1 {
-                designated
+                control::designated(&self.state.game, c.side, &control::LazyPath::new())
             } else {
                 active
             };

@@ -222,7 +222,16 @@ pub(crate) fn aimed_shot_target(shooter: &Player, direction: Vec2) -> Vec2 {
 /// receiver, whatever the direction, even straight behind. An agent's pass goes fully to him. Only a
 /// player with no team-mate plays the ball into space, to the manual target. A long pass is led
 /// forward by a fifth of its length.
-pub(crate) fn pass_target(kind: KickKind, kicker: &Player, mates: &[Player], direction: Vec2, power: f32) -> Vec2 {
+///
+/// Also gives the team-mate it is meant for (index in his team), `None` for a player with nobody
+/// to pass to.
+pub(crate) fn pass_choice(
+    kind: KickKind,
+    kicker: &Player,
+    mates: &[Player],
+    direction: Vec2,
+    power: f32,
+) -> (Vec2, Option<usize>) {
     let reach = (power * 60.0).clamp(1.0, 100.0);
     let manual = kicker.position + kicker.velocity.normalize_or_zero() * 0.2 + direction * reach;
     let mut best = None;
@@ -241,15 +250,16 @@ pub(crate) fn pass_target(kind: KickKind, kicker: &Player, mates: &[Player], dir
         let rating = distance_rating + angle_rating;
         if rating < best_rating {
             best_rating = rating;
-            best = Some(predicted);
+            best = Some((predicted, mate.index));
         }
     }
-    let target = best.unwrap_or(manual);
+    let target = best.map_or(manual, |(at, _)| at);
+    let receiver = best.map(|(_, index)| index);
     if kind == KickKind::LongPass {
         let length = target.distance(kicker.position);
-        target + Vec2::new(kicker.side.attack_sign() * 0.2 * length, 0.0)
+        (target + Vec2::new(kicker.side.attack_sign() * 0.2 * length, 0.0), receiver)
     } else {
-        target
+        (target, receiver)
     }
 }
 
@@ -289,7 +299,7 @@ mod tests {
         // academy_empty_goal: our CB at the centre spot facing the empty goal, our keeper behind.
         let mates = [player(Side::Left, 0, Vec2::new(-52.0, 0.0)), player(Side::Left, 1, Vec2::ZERO)];
         for kind in [KickKind::ShortPass, KickKind::LongPass, KickKind::HighPass] {
-            let target = pass_target(kind, &mates[1], &mates, Vec2::X, 0.13);
+            let target = pass_choice(kind, &mates[1], &mates, Vec2::X, 0.13).0;
             assert!(target.x < -30.0, "{kind:?} went to {target}");
         }
     }
@@ -303,7 +313,7 @@ mod tests {
             player(Side::Left, 2, Vec2::new(10.0, 10.0)),
             player(Side::Left, 3, Vec2::new(10.0, -10.0)),
         ];
-        let target = pass_target(KickKind::ShortPass, &mates[1], &mates, Vec2::new(1.0, 1.0).normalize(), 0.3);
+        let target = pass_choice(KickKind::ShortPass, &mates[1], &mates, Vec2::new(1.0, 1.0).normalize(), 0.3).0;
         assert_eq!(target, Vec2::new(10.0, 10.0));
     }
 
@@ -311,10 +321,10 @@ mod tests {
     fn without_a_team_mate_a_pass_goes_power_times_60_metres_along_the_direction() {
         use crate::geometry::Side;
         let alone = [player(Side::Left, 1, Vec2::ZERO)];
-        let short = pass_target(KickKind::ShortPass, &alone[0], &alone, Vec2::X, 0.11);
+        let short = pass_choice(KickKind::ShortPass, &alone[0], &alone, Vec2::X, 0.11).0;
         assert!((short.x - 6.6).abs() < 0.01 && short.y == 0.0, "{short}");
         // A long pass is led a fifth further forward.
-        let long = pass_target(KickKind::LongPass, &alone[0], &alone, Vec2::X, 0.129);
+        let long = pass_choice(KickKind::LongPass, &alone[0], &alone, Vec2::X, 0.129).0;
         assert!((long.x - 1.2 * 7.74).abs() < 0.01, "{long}");
     }
 

@@ -4,7 +4,7 @@ use glam::Vec2;
 
 use crate::geometry::Side;
 
-use super::kick::{launch, pass_target};
+use super::kick::{launch, pass_choice};
 use super::{GOAL_DEAD_TICKS, GameMode, KickKind, Match, OUT_DEAD_TICKS, Phase};
 use crate::game::input::Kick;
 use crate::physics::{MotionLimits, TICK_SECONDS, move_player, separate_players};
@@ -25,11 +25,9 @@ const PASS_WIND_UP: f32 = 10.0;
 /// touch before it is forgotten (GRF's human controller buffers a command 1,000 ms).
 pub(crate) const QUEUED_KICK_WINDOW: u16 = 100;
 /// Within this distance (m) of a loose ball an agent's player steps to it by himself, whatever his
-/// stick says; beyond it he chases it only with his stick idle (GRF's automatic ball control: the
-/// academy drills' carriers start up to 1.4 m from the ball).
-const BALL_CONTROL_RANGE: f32 = 3.0;
-/// How far ahead (s) of a rolling ball an agent's player chasing it runs to.
-const CHASE_LEAD: f32 = 0.3;
+/// stick says (GRF's automatic ball control: the academy drills' carriers start up to 1.4 m from
+/// the ball). Beyond it the magnet takes over (see `Match::find_magnet`).
+pub(super) const BALL_CONTROL_RANGE: f32 = 3.0;
 /// A loose ball nearer than this (m) is at an idle player's feet already: he does not step to it
 /// (GRF shows such a ball owned by nobody until he plays it).
 const AT_FEET: f32 = 0.7;
@@ -277,22 +275,36 @@ impl Match {
     /// Where `kick` by `g` goes: its point, or for a direction the goal (a shot) or the receiver
     /// chosen as GRF chooses for an agent's pass.
     fn kick_target(&self, g: usize, kick: &Kick) -> Vec2 {
-        let side = self.players[g].side;
+        self.kick_aim(g, kick).0
+    }
+
+    /// [`Match::kick_target`] and, for a pass, the team-mate it is meant for (index in his team):
+    /// the one GRF's rating picks for a pass in a direction, the one nearest the point for a pass
+    /// to a point.
+    fn kick_aim(&self, g: usize, kick: &Kick) -> (Vec2, Option<usize>) {
+        let kicker = &self.players[g];
+        let mates = self.team(kicker.side);
         match kick.target {
-            super::KickTarget::Point(p) => p,
+            super::KickTarget::Point(p) if kick.kind == KickKind::Shot => (p, None),
+            super::KickTarget::Point(p) => {
+                let receiver = mates
+                    .iter()
+                    .filter(|m| m.active && m.index != kicker.index)
+                    .min_by(|a, b| a.position.distance_squared(p).total_cmp(&b.position.distance_squared(p)))
+                    .map(|m| m.index);
+                (p, receiver)
+            }
             super::KickTarget::Direction(dir) if kick.kind == KickKind::Shot => {
-                super::kick::aimed_shot_target(&self.players[g], dir)
+                (super::kick::aimed_shot_target(kicker, dir), None)
             }
-            super::KickTarget::Direction(dir) => {
-                pass_target(kick.kind, &self.players[g], self.team(side), dir, kick.power)
-            }
+            super::KickTarget::Direction(dir) => pass_choice(kick.kind, kicker, mates, dir, kick.power),
         }
     }
 
     /// Executes `kick` by the ball owner `g`.
     pub(crate) fn execute_kick(&mut self, g: usize, kick: Kick) {
         let side = self.players[g].side;
-        let target = self.kick_target(g, &kick);
+        let (target, receiver) = self.kick_aim(g, &kick);
         let kicker = &self.players[g];
         let stat = if kick.kind == KickKind::Shot { kicker.attributes.shooting } else { kicker.attributes.passing };
         let accuracy = kicker.skill(stat, self.theta(g));
@@ -311,7 +323,7 @@ impl Match {
             self.record(Event::Shot { side, player: index, on_target });
             self.pending_pass = None;
         } else {
-            self.record(Event::Pass { side, player: index });
+            self.record(Event::Pass { side, player: index, to: receiver });
             self.pending_pass = Some(g);
         }
         // No offside from a throw-in, goal kick or corner kick (Law 11).
@@ -333,11 +345,12 @@ impl Match {
         // takes to a loose ball he is the one to control. At most 22 players: on the stack.
         let mut aims = [None; MAX_PLAYERS];
         let mut controls = [None; MAX_PLAYERS];
+        self.refresh_magnet();
         for g in 0..self.players.len().min(MAX_PLAYERS) {
             if let Some((kick, _)) = self.players[g].pending_kick {
                 aims[g] = Some(self.kick_target(g, &kick) - self.players[g].position);
             } else if self.agent_driven[g] {
-                controls[g] = self.ball_control_step(g);
+                controls[g] = self.magnet_step(g).or_else(|| self.ball_control_step(g));
             }
         }
         for (p, step) in self.players.iter_mut().zip(controls) {
@@ -412,9 +425,7 @@ impl Match {
     /// a dribble's (GRF's human controller issues ball-control and trap commands by itself; the
     /// stick then steers the dribble. Measured in GRF 2.10: holding left, bottom-left or top-left
     /// from the start of academy_empty_goal or academy_run_to_score, our CB owns the ball by step 10
-    /// and dribbles it that way). Further off, with his stick idle and no team-mate nearer the ball,
-    /// he sprints after it (measured: after his own shot from the centre spot of academy_empty_goal
-    /// stops short of the line, our CB with no direction pressed runs 45 m after it at 7.8 m/s).
+    /// and dribbles it that way). Further off the magnet may run him to it (`Match::magnet_step`).
     fn ball_control_step(&self, g: usize) -> Option<Vec2> {
         if self.owner.is_some() || self.mode != GameMode::Normal {
             return None;
@@ -425,17 +436,7 @@ impl Match {
         let d2 = to.length_squared();
         let stick = self.inputs[g].velocity;
         if d2 > BALL_CONTROL_RANGE * BALL_CONTROL_RANGE {
-            // Further off, only an idle stick hands him to the chase, and only as the man of his
-            // team nearest the ball (the stick is checked first: it is the cheap test).
-            if stick.length_squared() > 0.01 {
-                return None;
-            }
-            let side = me.side;
-            if self.players.iter().any(|p| p.active && p.side == side && p.position.distance_squared(ball.xy()) < d2) {
-                return None;
-            }
-            let meet = ball.xy() + ball.velocity.truncate() * CHASE_LEAD;
-            return Some((meet - me.position).normalize_or_zero() * me.max_speed);
+            return None;
         }
         // A ball already at his feet he leaves be, unless he is on his way to it.
         if ball.position.z > 0.5

@@ -150,7 +150,7 @@ fn happened(atom: &EventAtom, event: &Event, view: &Viewpoint<'_>) -> bool {
         (EventKind::GoalAgainst, Event::Goal { side, .. }) => (side.opponent(), None),
         (EventKind::Shot, Event::Shot { side, player, .. }) => (side, Some(player)),
         (EventKind::ShotOnTarget, Event::Shot { side, player, on_target: true }) => (side, Some(player)),
-        (EventKind::Pass, Event::Pass { side, player }) => (side, Some(player)),
+        (EventKind::Pass, Event::Pass { side, player, .. }) => (side, Some(player)),
         (EventKind::PassCompleted, Event::PassCompleted { side, player }) => (side, Some(player)),
         (EventKind::PassIntercepted, Event::PassIntercepted { side, player, .. }) => (side, Some(player)),
         (EventKind::PossessionWon, Event::PossessionWon { side, player, .. }) => (side, Some(player)),

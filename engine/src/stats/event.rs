@@ -40,6 +40,10 @@ pub enum Event {
         side: Side,
         /// The passer (index in his team).
         player: usize,
+        /// The team-mate it is meant for (index in his team); `None` when he has nobody to pass
+        /// to. An agent's team hands control to him (GRF selects a pass's target player).
+        #[serde(default)]
+        to: Option<usize>,
     },
     /// The last pass of `side` reached a team-mate (onside).
     PassCompleted {

@@ -116,7 +116,7 @@ mod tests {
         let mut s = MatchStats::default();
         s.record(Event::Shot { side: Side::Left, player: 9, on_target: true });
         s.record(Event::Shot { side: Side::Left, player: 9, on_target: false });
-        s.record(Event::Pass { side: Side::Right, player: 3 });
+        s.record(Event::Pass { side: Side::Right, player: 3, to: Some(5) });
         s.record(Event::PassCompleted { side: Side::Right, player: 3 });
         s.record(Event::PassIntercepted { side: Side::Right, player: 3, by: 5 });
         s.record(Event::PossessionWon { side: Side::Left, player: 5, from: 2 });

@@ -280,7 +280,7 @@ impl LiveMatch {
             let line = match *event {
                 Event::Goal { side, .. } => format!("step {step}: goal for {}", team(side)),
                 Event::Shot { side, player, .. } => format!("step {step}: shot by {} #{}", team(side), player + 1),
-                Event::Pass { side, player } => format!("step {step}: pass by {} #{}", team(side), player + 1),
+                Event::Pass { side, player, .. } => format!("step {step}: pass by {} #{}", team(side), player + 1),
                 _ => continue,
             };
             if self.events.len() == EVENTS_KEPT {

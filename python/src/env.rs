@@ -2,6 +2,7 @@
 
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
+use pyo3::intern;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList, PyTuple};
 use touchline_engine::{Side, StepInfo};
@@ -66,19 +67,19 @@ pub(crate) fn read_actions(actions: &Bound<'_, PyAny>, expected: usize, out: &mu
 
 pub(crate) fn info_dict<'py>(py: Python<'py>, info: &StepInfo) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    d.set_item("score", vec![info.score[0], info.score[1]])?;
-    d.set_item("steps_left", info.steps_left)?;
-    d.set_item("game_mode", info.game_mode as u8)?;
-    d.set_item("score_reward", info.score_reward)?;
-    d.set_item("checkpoint_reward", info.checkpoint_reward)?;
-    d.set_item("event_reward", info.event_reward)?;
-    d.set_item("script_reward", info.script_reward)?;
-    d.set_item("script_errors", info.script_errors)?;
-    d.set_item("steps", info.steps)?;
+    d.set_item(intern!(py, "score"), vec![info.score[0], info.score[1]])?;
+    d.set_item(intern!(py, "steps_left"), info.steps_left)?;
+    d.set_item(intern!(py, "game_mode"), info.game_mode as u8)?;
+    d.set_item(intern!(py, "score_reward"), info.score_reward)?;
+    d.set_item(intern!(py, "checkpoint_reward"), info.checkpoint_reward)?;
+    d.set_item(intern!(py, "event_reward"), info.event_reward)?;
+    d.set_item(intern!(py, "script_reward"), info.script_reward)?;
+    d.set_item(intern!(py, "script_errors"), info.script_errors)?;
+    d.set_item(intern!(py, "steps"), info.steps)?;
     // Not "episode": Gymnasium's RecordEpisodeStatistics and Stable-Baselines3 reserve that key for
     // episode statistics (a dict with "r", "l", "t") and fail on any other value.
-    d.set_item("episode_index", info.episode)?;
-    d.set_item("lesson", info.lesson)?;
+    d.set_item(intern!(py, "episode_index"), info.episode)?;
+    d.set_item(intern!(py, "lesson"), info.lesson)?;
     Ok(d)
 }
 
@@ -203,7 +204,7 @@ impl PyEnv {
             let obs = self.observation(py, false)?;
             let rewards = PyArray1::from_slice(py, self.core.env.rewards());
             let info = info_dict(py, self.core.env.info())?;
-            info.set_item("scenario_version", self.core.scenario_version())?;
+            info.set_item(intern!(py, "scenario_version"), self.core.scenario_version())?;
             if let Some((_, name)) = self.core.env.lesson() {
                 info.set_item("lesson_name", name)?;
             }

@@ -295,3 +295,43 @@ fn an_agent_that_stalls_at_a_set_piece_is_made_to_play_it() {
     // released at the next step, after the taker's wind-up.
     assert!((22..=24).contains(&waited), "the throw-in is taken {waited} steps in, not just after the forced pass");
 }
+
+/// How far (m) our CB, an agent's player with his stick idle, moves towards a ball lying between
+/// him and an opponent's CB `opponent_x` m from it, in half a second.
+fn idle_run_towards_a_loose_ball(opponent_x: f32) -> f32 {
+    use touchline_engine::game::PlayerInput;
+    use touchline_engine::{Match, PlayerEntry, Role, Scenario};
+    let mut left_gk = PlayerEntry::new(Role::GK, -1.0, 0.0);
+    left_gk.lazy = true;
+    let mut right_gk = PlayerEntry::new(Role::GK, 1.0, 0.0);
+    right_gk.lazy = true;
+    let s = Scenario {
+        name: "loose_ball".into(),
+        left_team: vec![left_gk, PlayerEntry::new(Role::CB, -0.5, 0.0)],
+        right_team: vec![right_gk, PlayerEntry::new(Role::CB, 0.5, 0.0)],
+        ball_position: [0.0, 0.3],
+        ..Scenario::default()
+    };
+    let mut game = Match::new(&s, 0, 1);
+    game.place_player(Side::Left, 1, glam::Vec2::new(-10.0, 0.0));
+    game.place_player(Side::Right, 1, glam::Vec2::new(opponent_x, 0.0));
+    game.place_ball(glam::Vec3::new(0.0, 0.0, 0.11), glam::Vec3::ZERO, None);
+    game.set_agent_input(Side::Left, 1, Some(PlayerInput::default()));
+    for _ in 0..50 {
+        game.tick();
+    }
+    assert_eq!(game.mode(), GameMode::Normal);
+    game.team(Side::Left)[1].position.x + 10.0
+}
+
+#[test]
+fn the_agents_player_second_to_a_loose_ball_is_pulled_to_it_in_part_only_while_the_race_is_close() {
+    // GRF's magnet also pulls his team's first to the ball when an opponent is first, by
+    // sqrt(2·(p − 0.5)) for a possession amount p = (t_opponent + 0.2) / (t_his + 0.2) above one
+    // half: 10 m from the ball against an opponent 8 m from it (p ≈ 0.83) he sets off with his
+    // stick idle; against one 3 m from it (p ≈ 0.4) he stays.
+    let close = idle_run_towards_a_loose_ball(8.0);
+    let lost = idle_run_towards_a_loose_ball(3.0);
+    assert!(close > 0.5, "a close race: he ran {close} m");
+    assert!(lost.abs() < 0.1, "a lost race: he moved {lost} m");
+}

@@ -202,7 +202,9 @@ fn keeper_holds_ball_ends_when_a_keeper_has_it_in_his_hands() {
         };
         let g = env.game();
         if out.terminated && g.score() == [0, 0] {
-            assert_eq!(g.owner(), Some((Side::Right, 0)), "seed {seed}: ended without the keeper holding it");
+            // Usually their keeper after a save; now and then ours, the ball cleared back to him.
+            let owner = g.owner();
+            assert!(matches!(owner, Some((_, 0))), "seed {seed}: ended without a keeper holding it ({owner:?})");
             held += 1;
         }
     }

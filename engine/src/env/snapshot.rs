@@ -82,8 +82,9 @@ impl Snapshot {
     /// (a shot's difficulty depends on it); version 13 drops the blocked ball control (a pass
     /// asked for at a loose ball is queued like a shot); version 14 the tick of the last touch of
     /// the ball (a player's body blocks a fast ball only just after an opponent's touch); version
-    /// 15 the magnet's last answer and its tick, and the team-mate each pass event is meant for.
-    pub const FORMAT_VERSION: u16 = 15;
+    /// 15 the magnet's last answer and its tick, and the team-mate each pass event is meant for;
+    /// version 16 the magnet's answer for each team, with how hard it pulls.
+    pub const FORMAT_VERSION: u16 = 16;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {

@@ -123,7 +123,7 @@ fn high_pass_velocity(dir: Vec2, distance: f32) -> Vec3 {
 }
 
 /// GRF's `curve`: blends `x` in [0, 1] with a sine ease (flat at both ends) by `bias`.
-fn ease(x: f32, bias: f32) -> f32 {
+pub(crate) fn ease(x: f32, bias: f32) -> f32 {
     (libm::sinf((x - 0.5) * std::f32::consts::PI) * 0.5 + 0.5) * bias + x * (1.0 - bias)
 }
 

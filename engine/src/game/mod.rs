@@ -81,10 +81,11 @@ pub struct Match {
     /// while he has the ball): a player's body blocks a ball only soon after an opponent touched
     /// it (see `Match::control_loose_ball`).
     pub(crate) touch_tick: u64,
-    /// GRF's magnet (see `Match::find_magnet`): the agent's player first to the loose ball and where he
-    /// meets it, as last worked out, and the in-play tick it was worked out at. It is worked out
-    /// again every `magnet::MAGNET_EVERY` ticks and after every touch of the ball.
-    pub(crate) magnet: Option<(usize, glam::Vec2)>,
+    /// GRF's magnet for each team (see `Match::find_magnet`): the agent's player it pulls to the
+    /// loose ball, where he meets it and how hard, as last worked out, and the in-play tick it
+    /// was worked out at. It is worked out again every `magnet::MAGNET_EVERY` ticks and after
+    /// every touch of the ball.
+    pub(crate) magnet: [Option<magnet::Pull>; 2],
     pub(crate) magnet_tick: u64,
     /// Player who last had the ball at his feet (cleared at kickoffs): a trap by an opponent of
     /// his is a [`Event::PossessionWon`].
@@ -196,7 +197,7 @@ impl Match {
             carry_distance: 0.5,
             last_touch: None,
             touch_tick: 0,
-            magnet: None,
+            magnet: [None; 2],
             magnet_tick: 0,
             possessor: None,
             score: [0, 0],

@@ -22,9 +22,19 @@ const REACH_HEIGHT: f32 = 2.0;
 /// is simply kept under control and it never is).
 pub(crate) type LazyPath = OnceCell<BallPath>;
 
-/// Seconds `p` needs to get to the ball on its predicted `path`.
+/// A free ball slower than this (m/s) is as good as where it lies for the time-to-ball estimate
+/// (the predicted path is worked out only for a faster one: it is most of this module's cost).
+const SLOW_BALL: f32 = 5.0;
+
+/// Seconds `p` needs to get to the ball: along its predicted `path` while it runs free, straight
+/// to it while someone has it at his feet (it goes where he goes) or it is slow.
 fn time_to_ball(game: &Match, path: &LazyPath, p: &crate::player::Player) -> f32 {
-    path.get_or_init(|| BallPath::predict(game.ball())).intercept(p.position, p.max_speed.max(0.1), REACH_HEIGHT).0
+    let speed = p.max_speed.max(0.1);
+    let ball = game.ball();
+    if game.owner().is_some() || ball.velocity.length_squared() < SLOW_BALL * SLOW_BALL {
+        return p.position.distance(ball.xy()) / speed;
+    }
+    path.get_or_init(|| BallPath::predict(game.ball())).intercept(p.position, speed, REACH_HEIGHT).0
 }
 
 /// The player of `side` the team would hand control to: the ball owner if he is on this team,

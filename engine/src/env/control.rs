@@ -5,8 +5,9 @@
 //! team-mate a pass is meant for as it is played (the goalkeeper too), and to the team's
 //! designated player when he has the ball or takes a set piece, or when he could reach the ball
 //! more than three times sooner than the controlled player farthest from it (never the
-//! goalkeeper). Times to the ball are along its predicted path, as GRF's time needed to get to
-//! the ball: a player behind a pass that runs away from him is far from it.
+//! goalkeeper). Times to a moving free ball are along its predicted path, as GRF's time needed to
+//! get to the ball (a player behind a pass that runs away from him is far from it); to an owned
+//! or slow ball, straight.
 
 use std::cell::OnceCell;
 

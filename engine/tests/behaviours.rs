@@ -300,7 +300,7 @@ fn until_distance_switches_on_the_first_tick_it_holds() {
     );
     let mut game = Match::new(&s, 0, 1);
     let me = game.team(Side::Left)[1].position;
-    game.place_ball(glam::Vec3::new(me.x + 15.0, me.y, 0.11), glam::Vec3::new(-9.0, 0.0, 0.0), None);
+    game.place_ball(glam::Vec3::new(me.x + 15.0, me.y, 0.11), glam::Vec3::new(-11.0, 0.0, 0.0), None);
     let mut before = game.ball().xy().distance(me);
     for tick in 0..300 {
         game.tick();

@@ -5,7 +5,9 @@ mod ball;
 mod colliders;
 mod player_motion;
 
-pub use ball::{BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_QUADRATIC, rolled_speed};
+pub use ball::{
+    BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_QUADRATIC, ROLL_QUADRATIC_TOTAL, rolled_speed,
+};
 pub use colliders::{PitchColliders, Surface};
 pub(crate) use player_motion::{MotionLimits, keep_inside_rim, move_player, separate_players};
 

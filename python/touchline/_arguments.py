@@ -220,15 +220,18 @@ def write_actions(action: Any, out: np.ndarray, action_count: int) -> None:
             out[0] = action
             return
         raise ValueError(_range_message(action, action_count))
-    if type(action) is list or type(action) is tuple:
-        # GRF's own habit, a list of Python ints (`env.step([19])`): checked and written without
-        # building a numpy array, which cost more than the engine's step for one player.
-        if len(action) == count and all(type(a) is int and 0 <= a < action_count for a in action):
-            if count == 1:
-                out[0] = action[0]
-            else:
-                out[:] = action
-            return
+    # GRF's own habit, a list of Python ints (`env.step([19])`): checked and written without
+    # building a numpy array, which cost more than the engine's step for one player.
+    if (
+        (type(action) is list or type(action) is tuple)
+        and len(action) == count
+        and all(type(a) is int and 0 <= a < action_count for a in action)
+    ):
+        if count == 1:
+            out[0] = action[0]
+        else:
+            out[:] = action
+        return
     if isinstance(action, (bool, np.bool_)):
         raise ValueError(f"an action must be an integer index, got the bool {action!r}")
     if isinstance(action, (int, np.integer)):

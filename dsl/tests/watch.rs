@@ -11,8 +11,10 @@ use touchline_dsl::{Watched, load};
 use touchline_engine::scenario::{RewardKind, RewardTerm};
 use touchline_engine::{Action, EnvConfig};
 
-fn folder() -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("touchline-watch-{}", std::process::id()));
+fn folder(test: &str) -> PathBuf {
+    // One folder per test: the tests run in parallel threads of one process, and a folder shared
+    // between them was removed under a running test's watcher.
+    let dir = std::env::temp_dir().join(format!("touchline-watch-{}-{test}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
@@ -40,7 +42,7 @@ fn write_atomically(path: &Path, text: &str) {
 
 #[test]
 fn the_env_follows_edits_and_keeps_the_last_good_version() {
-    let dir = folder();
+    let dir = folder("edits");
     let mut scenario = load("academy_empty_goal_close").unwrap();
     scenario.rewards = vec![RewardTerm { reward: RewardKind::Script { path: "r.rhai".into() }, weight: 1.0 }];
     let spec = dir.join("scenario.json");
@@ -132,7 +134,7 @@ fn keep_reading(file: &Path, secs: u64) {
 /// reloads nothing, one edit is one reload, a broken edit is one report.
 #[test]
 fn only_content_changes_reload_and_each_failure_is_reported_once() {
-    let dir = folder().join("once");
+    let dir = folder("once");
     std::fs::create_dir_all(&dir).unwrap();
     let (watched, file, reports) = watched_script(&dir, &script("1.0"));
 

@@ -74,6 +74,37 @@ fn shot_power(distance: f32, rng: &mut MatchRng) -> f32 {
 const SHOT_LANE: f32 = 3.6;
 const SHOT_AIM: f32 = 3.5;
 
+/// GRF's AI takes its on-the-ball decision for the player designated to a loose ball once he
+/// needs under this long to reach it (s); a pass or a shot decided then is struck with his
+/// first touch, so he never shows as the ball's owner.
+const DECIDE_WITHIN: f32 = 1.0;
+/// Ticks a carrier who just got the ball runs with it before he thinks of a pass or shot (unless
+/// pressed).
+const FIRST_TOUCH_TICKS: u32 = 12;
+
+/// The kick `g`, the first of his team to a loose ball and less than [`DECIDE_WITHIN`] from it,
+/// strikes with his first touch: the pass or shot he would choose with the ball at his feet
+/// (GRF 2.10's on-the-ball AI decides before the touch). `None` when he would rather run with
+/// it, or is not the one to play it. Keepers have their own rule (`clearance`).
+pub(crate) fn first_touch(
+    view: &MatchView,
+    g: usize,
+    analysis: &Analysis,
+    difficulty: &Difficulty,
+    rng: &mut MatchRng,
+) -> Option<Kick> {
+    if view.owner.is_some() || view.players[g].is_keeper() {
+        return None;
+    }
+    match analysis.chaser {
+        Some((chaser, t, _)) if chaser == g && t < DECIDE_WITHIN => {}
+        _ => return None,
+    }
+    // As if he had it, past the first touch a carrier takes on receiving it.
+    let on_the_ball = MatchView { owner: Some(g), owner_ticks: FIRST_TOUCH_TICKS, ..*view };
+    plan(&on_the_ball, g, analysis, difficulty, rng).kick
+}
+
 /// The plan for the ball carrier `g`.
 pub(crate) fn plan(
     view: &MatchView,
@@ -115,7 +146,7 @@ pub(crate) fn plan(
     let to = frame.vec2(pos_t + dir * 8.0);
     let dribble = Plan { dribble: pressure < 1.8, run_through: true, ..Plan::go(to, speed, to - me.position) };
     // A player who just got the ball takes a touch first, unless an opponent is on him.
-    if view.owner_ticks < 12 && pressure > 2.5 {
+    if view.owner_ticks < FIRST_TOUCH_TICKS && pressure > 2.5 {
         return dribble;
     }
 

@@ -319,7 +319,8 @@ impl TeamAi {
                 Plan { slide, ..Plan::go(target, team_shape::pace(view, p), ball - p.position) }
             };
             if view.mode == GameMode::Normal && p.active && !p.lazy {
-                plan.first_time = clearance::first_time(view, g, &analysis);
+                plan.first_time = clearance::first_time(view, g, &analysis)
+                    .or_else(|| ball_carrier::first_touch(view, g, &analysis, difficulty, rng));
             }
             self.plans[i] = plan;
         }

@@ -34,6 +34,9 @@ fn steps(c: &mut Criterion) {
     let v2 = EnvConfig { action_set: ActionSet::V2, ..EnvConfig::default() };
     let full = Env::with_config(scenario("11_vs_11_easy_stochastic"), v2, 0).expect("env");
     bench_steps(c, "11_vs_11_easy_stochastic/builtin_ai_22_players", full, || Action::BuiltinAi);
+    // The scenario of the side-by-side timing against GRF (README.md, Speed): medium opposition.
+    let medium = Env::with_config(scenario("11_vs_11_stochastic"), v2, 0).expect("env");
+    bench_steps(c, "11_vs_11_stochastic/builtin_ai_22_players", medium, || Action::BuiltinAi);
 
     let academy = Env::new(scenario("academy_empty_goal_close"), 0).expect("env");
     let mut state: u64 = 0x2545_F491_4F6C_DD1D;

@@ -6,7 +6,9 @@ mod common;
 
 use touchline_engine::{Action, ActionSet, Env, EnvConfig, MatchStats, Side};
 
-const MATCHES: u64 = 10;
+/// Matches per pairing: with 10 the fixed sample of equal sides scored 0.9 a match against 1.44 over
+/// 50 (the example), so a bound on the mean failed on the luck of the draw after unrelated changes.
+const MATCHES: u64 = 30;
 
 fn matches(left: f32, right: f32) -> Vec<MatchStats> {
     (0..MATCHES)

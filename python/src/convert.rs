@@ -5,8 +5,55 @@ use numpy::ndarray::ArrayView2;
 use numpy::{PyArray1, PyArray2};
 use pyo3::intern;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyDict, PyString};
 use touchline_engine::RawObservation;
+
+/// A new dict already holding `keys` (each `None`), copied from a template made once: the values
+/// set afterwards replace entries in place, where a dict built up from empty is resized three
+/// times on the way to GRF's 23 keys (a dict is made for every observation and step).
+pub(crate) fn dict_with_keys<'py>(
+    py: Python<'py>,
+    template: &'static PyOnceLock<Py<PyDict>>,
+    keys: &[&'static str],
+) -> PyResult<Bound<'py, PyDict>> {
+    let template = template.get_or_try_init(py, || -> PyResult<Py<PyDict>> {
+        let d = PyDict::new(py);
+        for key in keys {
+            d.set_item(PyString::intern(py, key), py.None())?;
+        }
+        Ok(d.unbind())
+    })?;
+    template.bind(py).copy()
+}
+
+/// The raw observation's keys, in GRF's order.
+const RAW_KEYS: [&str; 23] = [
+    "ball",
+    "ball_direction",
+    "ball_rotation",
+    "ball_owned_team",
+    "ball_owned_player",
+    "left_team",
+    "left_team_direction",
+    "left_team_tired_factor",
+    "left_team_yellow_card",
+    "left_team_active",
+    "left_team_roles",
+    "right_team",
+    "right_team_direction",
+    "right_team_tired_factor",
+    "right_team_yellow_card",
+    "right_team_active",
+    "right_team_roles",
+    "score",
+    "steps_left",
+    "game_mode",
+    "active",
+    "designated",
+    "sticky_actions",
+];
+static RAW_TEMPLATE: PyOnceLock<Py<PyDict>> = PyOnceLock::new();
 
 /// Most rows `pairs` is given: a full team.
 const MAX_ROWS: usize = touchline_engine::MAX_PLAYERS_PER_TEAM;
@@ -31,7 +78,7 @@ fn floats<'py>(py: Python<'py>, values: &[f32]) -> Bound<'py, PyArray1<f64>> {
 
 /// One controller's raw observation as a dict with GRF's keys.
 pub(crate) fn raw_to_dict<'py>(py: Python<'py>, o: &RawObservation) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
+    let d = dict_with_keys(py, &RAW_TEMPLATE, &RAW_KEYS)?;
     d.set_item(intern!(py, "ball"), floats(py, &o.ball))?;
     d.set_item(intern!(py, "ball_direction"), floats(py, &o.ball_direction))?;
     d.set_item(intern!(py, "ball_rotation"), floats(py, &o.ball_rotation))?;

@@ -4,11 +4,12 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::intern;
 use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyBytes, PyDict, PyList, PyTuple};
 use touchline_engine::{Side, StepInfo};
 use touchline_render::{RenderOptions, Renderer, Scene};
 
-use crate::convert::raw_to_dict;
+use crate::convert::{dict_with_keys, raw_to_dict};
 use crate::core::{EnvArgs, EnvCore, EnvOptions, ObsOut};
 use crate::errors::{engine_error, guard};
 use crate::recording::Recording;
@@ -44,16 +45,23 @@ struct InitArgs {
 /// Reads one action index per controller from an int, a sequence or a numpy array.
 pub(crate) fn read_actions(actions: &Bound<'_, PyAny>, expected: usize, out: &mut Vec<u32>) -> PyResult<()> {
     out.clear();
-    if let Ok(a) = actions.extract::<i64>() {
-        out.push(u32::try_from(a).map_err(|_| PyValueError::new_err(format!("action {a} is negative or too large")))?);
+    let action =
+        |a: i64| u32::try_from(a).map_err(|_| PyValueError::new_err(format!("action {a} is negative or too large")));
+    // The common case, a contiguous int64 array (the compat layer's and most trainers'), is read in
+    // place: extracted as a sequence it made a numpy scalar per element, a microsecond a step.
+    let array = actions.cast::<PyArray1<i64>>().ok().and_then(|a| a.try_readonly().ok());
+    if let Some(values) = array.as_ref().and_then(|a| a.as_slice().ok()) {
+        for &a in values {
+            out.push(action(a)?);
+        }
+    } else if let Ok(a) = actions.extract::<i64>() {
+        out.push(action(a)?);
     } else {
         let values: Vec<i64> = actions.extract().map_err(|_| {
             PyValueError::new_err("actions must be an int or a sequence / 1-D array of ints, one per controlled player")
         })?;
         for a in values {
-            out.push(
-                u32::try_from(a).map_err(|_| PyValueError::new_err(format!("action {a} is negative or too large")))?,
-            );
+            out.push(action(a)?);
         }
     }
     if out.len() != expected {
@@ -65,8 +73,24 @@ pub(crate) fn read_actions(actions: &Bound<'_, PyAny>, expected: usize, out: &mu
     Ok(())
 }
 
+/// The keys `info_dict` sets, in its order.
+const INFO_KEYS: [&str; 11] = [
+    "score",
+    "steps_left",
+    "game_mode",
+    "score_reward",
+    "checkpoint_reward",
+    "event_reward",
+    "script_reward",
+    "script_errors",
+    "steps",
+    "episode_index",
+    "lesson",
+];
+static INFO_TEMPLATE: PyOnceLock<Py<PyDict>> = PyOnceLock::new();
+
 pub(crate) fn info_dict<'py>(py: Python<'py>, info: &StepInfo) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
+    let d = dict_with_keys(py, &INFO_TEMPLATE, &INFO_KEYS)?;
     d.set_item(intern!(py, "score"), vec![info.score[0], info.score[1]])?;
     d.set_item(intern!(py, "steps_left"), info.steps_left)?;
     d.set_item(intern!(py, "game_mode"), info.game_mode as u8)?;

@@ -222,16 +222,15 @@ def write_actions(action: Any, out: np.ndarray, action_count: int) -> None:
         raise ValueError(_range_message(action, action_count))
     # GRF's own habit, a list of Python ints (`env.step([19])`): checked and written without
     # building a numpy array, which cost more than the engine's step for one player.
-    if (
-        (type(action) is list or type(action) is tuple)
-        and len(action) == count
-        and all(type(a) is int and 0 <= a < action_count for a in action)
-    ):
-        if count == 1:
-            out[0] = action[0]
-        else:
+    if type(action) is list or type(action) is tuple:
+        if count == 1 and len(action) == 1:
+            first = action[0]
+            if type(first) is int and 0 <= first < action_count:
+                out[0] = first
+                return
+        elif len(action) == count and all(type(a) is int and 0 <= a < action_count for a in action):
             out[:] = action
-        return
+            return
     if isinstance(action, (bool, np.bool_)):
         raise ValueError(f"an action must be an integer index, got the bool {action!r}")
     if isinstance(action, (int, np.integer)):

@@ -50,9 +50,21 @@ fn tactical_rating(p: &Player, opponents: &[Player], frame: TeamFrame, forward_w
     let at = frame.vec2(p.position);
     let ahead = free_space(at + Vec2::X * SPRINT_SPEED * 0.5, 0.5, opponents, frame);
     let here = free_space(at + frame.vec2(p.velocity) * 0.1, 0.1, opponents, frame);
-    let goal = Vec2::new(HALF_LENGTH, 0.0);
-    let forward = libm::powf(1.0 - (at.distance(goal) / (2.0 * HALF_LENGTH)).clamp(0.0, 1.0), 1.5);
-    (0.4 * ahead + 0.3 * here + forward_weight * forward) / (0.7 + forward_weight)
+    (0.4 * ahead + 0.3 * here + forward_weight * closeness_to_goal(at)) / (0.7 + forward_weight)
+}
+
+/// The most [`tactical_rating`] can give `p`: all the space in the world, so only his closeness to
+/// goal counts. Cheap (no opponent is looked at): a team-mate whose best is no gain is passed
+/// over without rating his space.
+fn best_rating(p: &Player, frame: TeamFrame, forward_weight: f32) -> f32 {
+    (0.7 + forward_weight * closeness_to_goal(frame.vec2(p.position))) / (0.7 + forward_weight)
+}
+
+/// Closeness to the opponents' goal of a player at `at` (team frame, m), in [0, 1]: (1 − distance
+/// over the pitch's length)^1.5, as x·√x (a powf per rating was a twentieth of a match's step).
+fn closeness_to_goal(at: Vec2) -> f32 {
+    let x = 1.0 - (at.distance(Vec2::new(HALF_LENGTH, 0.0)) / (2.0 * HALF_LENGTH)).clamp(0.0, 1.0);
+    x * x.sqrt()
 }
 
 /// The odds, in [0, 1], that a ball of `kind` played from `origin` to `target` (team frame, m)
@@ -146,11 +158,13 @@ pub(crate) fn choose(
         if !mate.active || mate.index == me.index {
             continue;
         }
-        let mut rating = tactical_rating(mate, opponents, frame, forward_weight);
-        if mate.is_keeper() {
-            // A pass back to the keeper is the last resort.
-            rating *= 0.7;
+        // A pass back to the keeper is the last resort.
+        let keeper_factor = if mate.is_keeper() { 0.7 } else { 1.0 };
+        // (The margin covers rounding: the bound must never pass over a rating that would count.)
+        if best_rating(mate, frame, forward_weight) * keeper_factor + 1e-4 <= own + improvement {
+            continue;
         }
+        let rating = tactical_rating(mate, opponents, frame, forward_weight) * keeper_factor;
         if rating <= own + improvement {
             continue;
         }

@@ -100,6 +100,32 @@ def test_good_action_forms_single_player(action) -> None:
     env.step(action)
 
 
+def test_the_extension_reads_action_arrays_in_place_and_any_other_form() -> None:
+    # The extension reads a contiguous int64 array in place and falls back to the sequence path
+    # for everything else (other dtypes, strided views, lists): every form steps alike.
+    core = touchline._touchline.Env(
+        "academy_3_vs_1_with_keeper",
+        touchline.EnvOptions(number_of_left_players_agent_controls=2),
+    )
+    forms = [
+        np.array([5, 6], dtype=np.int64),
+        np.array([5, 6], dtype=np.int32),
+        np.array([5, 0, 6, 0], dtype=np.int64)[::2],
+        [5, 6],
+        (5, 6),
+    ]
+    observations = []
+    for actions in forms:
+        core.reset(0)
+        observations.append(core.step(actions)[0])
+    for observation in observations[1:]:
+        np.testing.assert_array_equal(observation, observations[0])
+    with pytest.raises(ValueError, match="negative"):
+        core.step(np.array([5, -1], dtype=np.int64))
+    with pytest.raises(ValueError, match="expected 2 actions"):
+        core.step(np.array([5], dtype=np.int64))
+
+
 @pytest.mark.parametrize("action", [3, [1, 2, 3], [1, 19], [-1, 0], np.array([0.0, 1.0])])
 def test_bad_action_several_players(action) -> None:
     env = touchline.make("academy_3_vs_1_with_keeper", number_of_left_players_agent_controls=2)

@@ -72,8 +72,24 @@ fn pairs<'py>(py: Python<'py>, rows: &[[f32; 2]]) -> PyResult<Bound<'py, PyArray
     Ok(PyArray2::from_array(py, &view))
 }
 
+/// Widens `values` on the stack and copies them once into a new array: `PyArray1::from_iter`
+/// collects into a `Vec` that the array then borrows through a second Python object, two
+/// allocations and an object more per array, seven arrays per observation.
+fn widened<'py, T: numpy::Element + Copy + Default, const N: usize>(
+    py: Python<'py>,
+    values: impl Iterator<Item = T>,
+) -> Bound<'py, PyArray1<T>> {
+    let mut buffer = [T::default(); N];
+    let mut n = 0;
+    for (slot, value) in buffer.iter_mut().zip(values) {
+        *slot = value;
+        n += 1;
+    }
+    PyArray1::from_slice(py, &buffer[..n])
+}
+
 fn floats<'py>(py: Python<'py>, values: &[f32]) -> Bound<'py, PyArray1<f64>> {
-    PyArray1::from_iter(py, values.iter().map(|v| f64::from(*v)))
+    widened::<f64, MAX_ROWS>(py, values.iter().map(|v| f64::from(*v)))
 }
 
 /// One controller's raw observation as a dict with GRF's keys.
@@ -116,7 +132,7 @@ pub(crate) fn raw_to_dict<'py>(py: Python<'py>, o: &RawObservation) -> PyResult<
         d.set_item(k_tired, floats(py, tired))?;
         d.set_item(k_card, PyArray1::from_slice(py, card))?;
         d.set_item(k_active, PyArray1::from_slice(py, active))?;
-        d.set_item(k_roles, PyArray1::from_iter(py, roles.iter().map(|r| i64::from(*r))))?;
+        d.set_item(k_roles, widened::<i64, MAX_ROWS>(py, roles.iter().map(|r| i64::from(*r))))?;
     }
     d.set_item(intern!(py, "score"), vec![o.score[0], o.score[1]])?;
     d.set_item(intern!(py, "steps_left"), o.steps_left)?;

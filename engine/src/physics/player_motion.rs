@@ -71,13 +71,16 @@ fn turn_towards(facing: &mut Vec2, target: Vec2) {
     if len2 < 1e-6 {
         return;
     }
-    let t = target / len2.sqrt();
-    let cos = facing.dot(t);
-    if cos >= TURN_COS {
-        *facing = t;
+    // cos(facing, target) >= TURN_COS, tested as facing·target >= TURN_COS·|target|: the
+    // division normalising the target is then off the path to the branch (this function runs for
+    // every player every tick, and that division's latency was most of its time).
+    let len = len2.sqrt();
+    if facing.dot(target) >= TURN_COS * len {
+        *facing = target / len;
         return;
     }
-    let cross = facing.perp_dot(t);
+    let t = target / len;
+    let cross = facing.perp_dot(target);
     let s = if cross >= 0.0 { TURN_SIN } else { -TURN_SIN };
     let f = *facing;
     *facing = Vec2::new(f.x * TURN_COS - f.y * s, f.x * s + f.y * TURN_COS).normalize_or(t);

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 import pytest
 import touchline
@@ -107,7 +109,7 @@ def test_the_extension_reads_action_arrays_in_place_and_any_other_form() -> None
         "academy_3_vs_1_with_keeper",
         touchline.EnvOptions(number_of_left_players_agent_controls=2),
     )
-    forms = [
+    forms: list[Any] = [
         np.array([5, 6], dtype=np.int64),
         np.array([5, 6], dtype=np.int32),
         np.array([5, 0, 6, 0], dtype=np.int64)[::2],

@@ -10,7 +10,8 @@ Events, each `step:what@x,y` (raw observation units):
   * `own T.P` the ball's owner became team T (0 left, 1 right, -1 nobody), player P;
   * `kick V` the ball's horizontal speed jumped by more than 4 m/s to V m/s (a pass, shot,
     clearance or tackle; `z` is its height, `a` the action of that step);
-  * `mode M` the game_mode became M (2 goal kick, 3 free kick, 4 corner, 5 throw-in, 6 penalty).
+  * `mode M` the game_mode became M (2 goal kick, 3 free kick, 4 corner, 5 throw-in, 6 penalty);
+  * `act P` the agent's control passed to player P (the raw observation's `active`).
 
 Usage (from the repository root, with the package installed):
     PYTHONPATH=python/bench python3 python/bench/episode_timeline.py SCENARIO POLICY N [--seed S]
@@ -42,6 +43,7 @@ def timeline(scenario: str, policy: str, episode: int, seed: int) -> tuple[int, 
     events: list[str] = []
     owner: tuple[int, int] | None = None
     mode = 0
+    active = int(obs["active"])
     ball = obs["ball"]
     speed = 0.0
     step = 0
@@ -63,6 +65,9 @@ def timeline(scenario: str, policy: str, episode: int, seed: int) -> tuple[int, 
         if int(obs["game_mode"]) != mode:
             mode = int(obs["game_mode"])
             events.append(f"{step}:mode{mode}{at}")
+        if int(obs["active"]) != active:
+            active = int(obs["active"])
+            events.append(f"{step}:act{active}")
         ball, speed = now, new_speed
         if done:
             return step, end, events

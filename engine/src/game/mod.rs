@@ -167,6 +167,9 @@ impl Match {
             }
         }
         let ranges = [0..left.len(), left.len()..left.len() + right.len()];
+        for side in Side::BOTH {
+            crate::ai::team_shape::assign_formation(&mut players[ranges[side.index()].clone()], TeamFrame::of(side));
+        }
         let (seed, noisy) =
             if scenario.deterministic { (scenario.game_engine_random_seed, false) } else { (seed, true) };
         let n = players.len();

@@ -67,6 +67,10 @@ pub(crate) fn set_up(m: &mut Match, kicking: Side) {
         p.home = TeamFrame::of(side).vec2(formation_to_world(side, ex, ey));
         p.facing = Vec2::new(side.attack_sign(), 0.0);
     }
+    for side in Side::BOTH {
+        let range = m.ranges[side.index()].clone();
+        crate::ai::team_shape::assign_formation(&mut m.players[range], TeamFrame::of(side));
+    }
     m.ball = crate::physics::Ball::at_rest(Vec2::ZERO);
     m.owner = None;
     // Nobody has the ball at a kickoff: the first trap wins no possession.

@@ -86,7 +86,7 @@ pub fn onside_margin(theta: f32) -> f32 {
 }
 
 /// Where player `g` should stand now (m, global frame): his formation slot (`home`) in the block
-/// ([`block_x`], [`block_y`]) drawn towards the ball ([`micro_focus`]). Forwards in
+/// (`block_x`, `block_y`) drawn towards the ball (`micro_focus`). Forwards in
 /// possession make runs towards goal ahead of the ball, but stay onside; defending players mark an
 /// opponent in their zone, goal-side of him, more tightly at higher θ; a player the team's man
 /// marking gave a man (`man`, global index) marks him instead ([`marking::position`]).

@@ -134,6 +134,9 @@ pub struct Analysis {
     /// The line this team's runners keep behind ([`MatchView::defensive_line`]), worked out once
     /// per decision rather than once per player placed in the shape.
     pub defensive_line: f32,
+    /// GRF's micro-focus strength for this team as the ball is now
+    /// (`team_shape::micro_focus_strength`), worked out once per decision.
+    pub micro_focus_strength: f32,
 }
 
 /// One team's built-in AI.

@@ -193,6 +193,10 @@ pub fn analyse(view: &MatchView, side: Side, _difficulty: &Difficulty) -> Analys
         second: second.map(|s| s.0),
         opponent_time,
         defensive_line: view.defensive_line(side),
+        micro_focus_strength: super::team_shape::micro_focus_strength(
+            TeamFrame::of(side).vec2(view.ball.xy()).x,
+            super::team_shape::possession_bias(view, side),
+        ),
     }
 }
 

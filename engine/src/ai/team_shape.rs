@@ -7,7 +7,6 @@
 use glam::Vec2;
 
 use super::{Analysis, Difficulty, MatchView, marking};
-use crate::game::kick::ease;
 use crate::geometry::TeamFrame;
 use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 use crate::player::Role;
@@ -94,18 +93,8 @@ pub fn position(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Di
     let frame = analysis.frame;
     let p = &view.players[g];
     let ball = frame.vec2(view.ball.xy());
-    let ours = match view.owner {
-        Some(o) => view.players[o].side == p.side,
-        None => view.last_touch.is_some_and(|t| view.players[t].side == p.side),
-    };
-    let loose = view.owner.is_none() && view.last_touch.is_none();
-    let bias = if ours {
-        1.0
-    } else if loose {
-        0.5
-    } else {
-        0.0
-    };
+    let bias = possession_bias(view, p.side);
+    let ours = bias == 1.0;
     let mut y = block_y(p.role, p.home, ball, bias);
     let home = p.home;
     let mut x = block_x(p.role, home.x / HALF_LENGTH, ball.x, bias);
@@ -113,7 +102,8 @@ pub fn position(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Di
         Some(o) if !ours => 0.5 * (ball + frame.vec2(view.players[o].position)),
         _ => ball,
     };
-    (x, y) = micro_focus(Vec2::new(x, y), ball, focal, bias);
+    let strength = analysis.micro_focus_strength;
+    (x, y) = micro_focus(Vec2::new(x, y), ball, focal, bias, strength);
     if ours && p.role.is_attacker() && p.home.x > -0.25 * HALF_LENGTH {
         // Off-the-ball run: get ahead of the ball, towards the goal.
         x = x.max(ball.x + 8.0);
@@ -210,7 +200,7 @@ fn block_x(role: Role, fx: f32, ball_x: f32, p: f32) -> f32 {
     let follow = ((ball_x / HALF_LENGTH + 0.8) / 1.6).clamp(0.0, 1.0);
     let focus = (lerp(0.776, 0.828) * 0.7 + follow * 0.3) * 2.0 - 1.0;
     let fx = fx.clamp(-1.0, 1.0);
-    let stretch = ease((1.0 - (fx * 1.2).abs()).clamp(0.0, 1.0), 1.0) * 0.35;
+    let stretch = curve((1.0 - (fx * 1.2).abs()).clamp(0.0, 1.0), 1.0) * 0.35;
     centre + (fx + (focus - fx) * stretch) * depth * HALF_LENGTH
 }
 
@@ -220,19 +210,56 @@ fn block_x(role: Role, fx: f32, ball_x: f32, p: f32) -> f32 {
 /// metre ahead of the ball and the pull grows as the ball goes up the pitch; without it, the spot
 /// is 2 m goal-side of `focal` (between the ball and its carrier) and the pull grows as the ball
 /// comes towards the team's goal.
-fn micro_focus(pure: Vec2, ball: Vec2, focal: Vec2, p: f32) -> (f32, f32) {
+fn micro_focus(pure: Vec2, ball: Vec2, focal: Vec2, p: f32, strength: f32) -> (f32, f32) {
     let attacking = Vec2::new(ball.x + 1.0, ball.y * 0.9);
     let defending = Vec2::new(focal.x - 2.0, focal.y * 0.9);
     let spot = defending.lerp(attacking, p);
-    let side = ((ball.x / HALF_LENGTH + 0.7) / 1.4).clamp(0.0, 1.0) * 0.7 + 0.3;
-    let auto = libm::powf(side, 0.8) * p + libm::powf(1.0 - side, 0.6) * (1.0 - p);
-    let strength = (0.938 + (0.826 - 0.938) * p) * (0.2 + 0.8 * auto);
     let dist = ((spot - pure) * Vec2::new(1.0, 0.8)).length() / 50.0;
     if dist >= 1.0 {
         return (pure.x, pure.y);
     }
-    let bias = (ease(1.0 - dist, 0.3) + (1.0 - ((dist - 0.15).abs() / 0.25).min(1.0)) * 0.1).clamp(0.0, 1.0) * strength;
+    let bias =
+        (curve(1.0 - dist, 0.3) + (1.0 - ((dist - 0.15).abs() / 0.25).min(1.0)) * 0.1).clamp(0.0, 1.0) * strength;
     (pure.x + (spot.x - pure.x) * bias, pure.y + 0.6 * (spot.y - pure.y) * bias)
+}
+
+/// The possession bias of `side` (GRF's, by who has the ball rather than its fading possession):
+/// 1 with the ball or after its own last touch, 0.5 before anyone touched it, else 0.
+pub(crate) fn possession_bias(view: &MatchView, side: crate::geometry::Side) -> f32 {
+    let ours = match view.owner {
+        Some(o) => view.players[o].side == side,
+        None => view.last_touch.is_some_and(|t| view.players[t].side == side),
+    };
+    if ours {
+        1.0
+    } else if view.owner.is_none() && view.last_touch.is_none() {
+        0.5
+    } else {
+        0.0
+    }
+}
+
+/// How strongly the micro-focus draws a team (see `micro_focus`) with the ball at `ball_x` (team
+/// frame, m) and possession bias `p`: 0.938 defending, 0.826 attacking, × (0.2 + 0.8 × auto), auto
+/// growing as the ball comes towards the team's goal when defending and towards the opponents'
+/// when attacking. The same for the whole team, so [`crate::ai::Analysis`] works it out once per
+/// decision.
+pub(crate) fn micro_focus_strength(ball_x: f32, p: f32) -> f32 {
+    let side = ((ball_x / HALF_LENGTH + 0.7) / 1.4).clamp(0.0, 1.0) * 0.7 + 0.3;
+    let attacking = if p > 0.0 { libm::powf(side, 0.8) * p } else { 0.0 };
+    let defending = if p < 1.0 { libm::powf(1.0 - side, 0.6) * (1.0 - p) } else { 0.0 };
+    let auto = attacking + defending;
+    (0.938 + (0.826 - 0.938) * p) * (0.2 + 0.8 * auto)
+}
+
+/// GRF's `curve`: `x` in [0, 1] blended with a sine ease (flat at both ends) by `bias`. The sine is
+/// a seventh-order polynomial (within 2e-4 over the half period used): the team shape evaluates it
+/// for every player at every decision, and libm's sine there cost a tenth of a match's step.
+fn curve(x: f32, bias: f32) -> f32 {
+    let t = (x - 0.5) * std::f32::consts::PI;
+    let t2 = t * t;
+    let sine = t * (1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0)));
+    (sine * 0.5 + 0.5) * bias + x * (1.0 - bias)
 }
 
 /// A player's place across the pitch (team frame, m) in GRF's moving block (GRF 2.10's team AI),
@@ -291,6 +318,15 @@ mod tests {
     use super::*;
 
     #[test]
+    fn the_sine_ease_is_grfs_curve() {
+        for i in 0..=100 {
+            let x = i as f32 / 100.0;
+            let exact = libm::sinf((x - 0.5) * std::f32::consts::PI) * 0.5 + 0.5;
+            assert!((curve(x, 1.0) - exact).abs() < 2e-4, "{x}");
+        }
+    }
+
+    #[test]
     fn better_teams_keep_further_onside() {
         assert!(onside_margin(1.0) > 1.0);
         assert!(onside_margin(0.0) < 0.0);
@@ -308,7 +344,7 @@ mod tests {
         let x = block_x(Role::CM, home.x / HALF_LENGTH, ball.x, 0.0);
         assert!((x + 17.0).abs() < 0.3, "{x}");
         let y = block_y(Role::CM, home, ball, 0.0);
-        let (x, y) = micro_focus(Vec2::new(x, y), ball, Vec2::new(-0.9, 0.0), 0.0);
+        let (x, y) = micro_focus(Vec2::new(x, y), ball, Vec2::new(-0.9, 0.0), 0.0, micro_focus_strength(ball.x, 0.0));
         assert!((x + 10.6).abs() < 0.5 && (y - 5.1).abs() < 0.5, "({x}, {y})");
     }
 

@@ -12,9 +12,11 @@ use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 use crate::player::Role;
 
 /// GRF's default formation (GRF 2.10's team data: 0.6 × its database place + 0.4 × the role's
-/// default place, pushed at least half a unit apart), in GRF's formation units (x from -1 at the
-/// team's own goal to 1, y from 1 on the left to -1): its team AI places the i-th player of every
-/// scenario by slot i, whatever the scenario's positions, which only say where he starts.
+/// default place, pushed at least half a unit apart), in GRF's formation units: x from -1 at the
+/// team's own goal to 1 at the other, y across, 1 on the first full back's side (a slot's home is
+/// 55 m × x along and -36 m × y across, in the team's frame). Its team AI places the i-th player
+/// of every scenario by slot i, whatever the scenario's positions, which only say where he
+/// starts.
 const FORMATION: [[f32; 2]; 11] = [
     [-1.0, 0.0],
     [-0.74, 0.77],

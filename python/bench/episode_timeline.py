@@ -13,6 +13,9 @@ Events, each `step:what@x,y` (raw observation units):
   * `mode M` the game_mode became M (2 goal kick, 3 free kick, 4 corner, 5 throw-in, 6 penalty);
   * `act P` the agent's control passed to player P (the raw observation's `active`).
 
+A closing line counts the episodes in which the agent's team was never seen with the ball, and
+their mean length.
+
 Usage (from the repository root, with the package installed):
     PYTHONPATH=python/bench python3 python/bench/episode_timeline.py SCENARIO POLICY N [--seed S]
 
@@ -82,12 +85,25 @@ def main() -> None:
     args = parser.parse_args()
     ends: collections.Counter[str] = collections.Counter()
     lengths = []
+    never_owned: list[int] = []
     for episode in range(args.episodes):
         length, end, events = timeline(args.scenario, args.policy, episode, args.seed)
         ends[end] += 1
         lengths.append(length)
+        if not any(":own0." in event for event in events):
+            never_owned.append(length)
         print(f"ep{episode} len{length} {end} | " + " ".join(events))
     print(f"mean length {sum(lengths) / len(lengths):.1f}; ends {dict(ends)}")
+    print(ownership_line(len(lengths), never_owned))
+
+
+def ownership_line(episodes: int, never_owned: list[int]) -> str:
+    """How many episodes never showed the agent's team (left, team 0) with the ball, and how long
+    they lasted: with GRF's end on a change of possession, such an episode cannot end that way."""
+    share = f"{len(never_owned)} of {episodes} episodes never show our team with the ball"
+    if not never_owned:
+        return share
+    return f"{share} (mean length {sum(never_owned) / len(never_owned):.1f})"
 
 
 if __name__ == "__main__":

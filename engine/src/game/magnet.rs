@@ -7,7 +7,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use super::kick::{ease, signed_angle};
-use super::tick::BALL_CONTROL_RANGE;
+use super::tick::{BALL_CONTROL_RANGE, DISTANCE_TO_VELOCITY};
 use super::{GameMode, Match};
 use crate::ai::BallPath;
 
@@ -17,9 +17,6 @@ const MAGNET_HEIGHT: f32 = 1.0;
 /// How often (ticks) the magnet is worked out again while the ball runs free (GRF: every 10 ms;
 /// here every env step, and at once after a touch).
 const MAGNET_EVERY: u64 = 10;
-/// GRF's `distanceToVelocityMultiplier`: a player running to a point d metres off asks for
-/// 2.6·d m/s, up to his top speed.
-const DISTANCE_TO_VELOCITY: f32 = 2.6;
 
 impl Match {
     /// Works [`Match::find_magnet`] out again every [`MAGNET_EVERY`] ticks of a free ball and after

@@ -28,6 +28,15 @@ pub(crate) const QUEUED_KICK_WINDOW: u16 = 100;
 /// stick says (GRF's automatic ball control: the academy drills' carriers start up to 1.4 m from
 /// the ball). Beyond it the magnet takes over (see `Match::find_magnet`).
 pub(super) const BALL_CONTROL_RANGE: f32 = 3.0;
+/// How far ahead (s) an agent's player's automatic ball control aims: where the ball will be at
+/// his touch (GRF's ball-control movement: 250 ms plus its 80 ms touch offset).
+const BALL_CONTROL_AHEAD: f32 = 0.33;
+/// Fastest ball (m/s, relative to him) an agent's player's automatic ball control goes for (GRF
+/// refuses a ball-control command above 15 m/s).
+const BALL_CONTROL_SPEED: f32 = 15.0;
+/// GRF's `distanceToVelocityMultiplier`: a player running to a point d metres off asks for
+/// 2.6·d m/s, up to his top speed.
+pub(super) const DISTANCE_TO_VELOCITY: f32 = 2.6;
 /// A loose ball nearer than this (m) is at an idle player's feet already: he does not step to it
 /// (GRF shows such a ball owned by nobody until he plays it).
 const AT_FEET: f32 = 0.7;
@@ -432,22 +441,30 @@ impl Match {
         }
         let ball = self.ball;
         let me = &self.players[g];
-        let to = ball.xy() - me.position;
-        let d2 = to.length_squared();
+        let d2 = (ball.xy() - me.position).length_squared();
         let stick = self.inputs[g].velocity;
         if d2 > BALL_CONTROL_RANGE * BALL_CONTROL_RANGE {
             return None;
         }
-        // A ball already at his feet he leaves be, unless he is on his way to it.
+        // A ball already at his feet he leaves be, unless he is on his way to it; one too fast
+        // for a touch he lets go (GRF refuses ball control above 15 m/s relative).
+        let relative = ball.velocity.truncate() - me.velocity;
         if ball.position.z > 0.5
             || (d2 < AT_FEET * AT_FEET && !me.controlling_ball && me.queued_kick.is_none())
-            || (ball.velocity.truncate() - me.velocity).length_squared() > 9.0
+            || relative.length_squared() > BALL_CONTROL_SPEED * BALL_CONTROL_SPEED
         {
             return None;
         }
         let nearer = self.players.iter().any(|p| p.active && p.position.distance_squared(ball.xy()) < d2);
-        let pace = stick.length().max(DRIBBLE_SPEED);
-        (!nearer).then(|| to.normalize_or_zero() * pace)
+        if nearer {
+            return None;
+        }
+        // GRF's ball-control movement: to where the ball will be a touch from now, at 2.6 m/s per
+        // metre to go (never slower than his stick or a dribble), so a ball rolling away from
+        // him is caught rather than chased.
+        let to = ball.xy() + ball.velocity.truncate() * BALL_CONTROL_AHEAD - me.position;
+        let pace = (to.length() * DISTANCE_TO_VELOCITY).max(stick.length()).max(DRIBBLE_SPEED);
+        Some(to.normalize_or_zero() * pace)
     }
 
     fn move_ball(&mut self) {

@@ -6,7 +6,10 @@ run with the same n, the same policies and the same end-of-episode classificatio
 (`fidelity_stats.py` gives the rule: |Δ| > 3 combined se, p̃ in proportions, lengths also 10 % off).
 
   * academy: the 11 Academy drills × random (n = 200) and idle (n = 50): P(goal for), P(goal
-    against), episode length, and the four end shares (goal, out of play, possession, time limit);
+    against), episode length, and the four end shares (goal, out of play, possession, time limit),
+    each case's episodes split over engine seeds of both parities and compared with GRF's figures
+    measured the same way (`grf_seed_mix.json`, `seed_spread.py` says why; `--single-seed` for the
+    first, one-seed reference);
   * match: 11 v 11 easy / medium / hard × builtin_ai / idle / random (n = 5, 3001 steps): goals for
     and against per match;
     these 22 + 9 are "the 31 reference cases": a case is flagged when any of its figures is;
@@ -16,7 +19,7 @@ run with the same n, the same policies and the same end-of-episode classificatio
 
 Usage (from the repository root, with the package installed):
     python3 python/bench/fidelity.py [--cases SUBSTRING] [--n-scale F] [--seed S]
-                                     [--workers N] [--json PATH]
+                                     [--workers N] [--json PATH] [--single-seed]
 """
 
 from __future__ import annotations
@@ -28,6 +31,7 @@ import multiprocessing
 import statistics
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import asdict
 from pathlib import Path
 from typing import Any
@@ -36,6 +40,8 @@ import fidelity_cases as cases
 import fidelity_stats as fs
 
 REFERENCE = Path(__file__).with_name("grf_reference.json")
+#: GRF's academy figures measured over 8 engine seeds of both parities (`seed_spread.py`).
+SEED_MIX = Path(__file__).with_name("grf_seed_mix.json")
 TEXTURE_METRICS = (
     "goal_kicks",
     "free_kicks",
@@ -121,16 +127,28 @@ def run_case(job: tuple[dict[str, Any], int, int]) -> tuple[list[dict[str, Any]]
             else (lambda env: cases.Scripted(script["first"]))
         )
     start = time.perf_counter()
-    episodes = cases.run_episodes(
+    if case.get("mix"):
+        # Split over engine seeds as GRF's seed-mixed figures were measured; each episode keeps
+        # the index of its seed's sample.
+        samples = cases.run_over_seeds(case["scenario"], policy, n, base_seed, case["id"])
+        episodes = [
+            {**asdict(episode), "sample": k}
+            for k, sample in enumerate(samples)
+            for episode in sample
+        ]
+        return episodes, time.perf_counter() - start
+    runs = cases.run_episodes(
         case["scenario"], policy, n, seed, with_stats=case["section"] == "texture"
     )
-    return [asdict(episode) for episode in episodes], time.perf_counter() - start
+    return [asdict(episode) for episode in runs], time.perf_counter() - start
 
 
 def compare(case: dict[str, Any], episodes: list[dict[str, Any]]) -> list[fs.Figure]:
     """The case's figures, GRF's next to touchline's."""
     ref, n = case["ref"], len(episodes)
     section = case["section"]
+    if section == "academy" and case.get("mix"):
+        return compare_seed_mix(case["mix"], episodes)
     if section == "academy":
         figures = [
             fs.proportion(
@@ -220,6 +238,42 @@ def compare(case: dict[str, Any], episodes: list[dict[str, Any]]) -> list[fs.Fig
     return compare_texture(case, episodes)
 
 
+def compare_seed_mix(mix: dict[str, Any], episodes: list[dict[str, Any]]) -> list[fs.Figure]:
+    """An academy case against GRF's seed-mixed figures (`seed_spread.py`): touchline's episodes
+    pooled over their engine seeds the same way (`fidelity_stats.seed_proportion`, `seed_mean`)."""
+    samples: dict[int, list[dict[str, Any]]] = {}
+    for episode in episodes:
+        samples.setdefault(episode["sample"], []).append(episode)
+    groups = list(samples.values())
+    ns = [len(g) for g in groups]
+
+    def share(
+        name: str, grf: dict[str, float], test: Callable[[dict[str, Any]], bool]
+    ) -> fs.Figure:
+        p, se = fs.seed_proportion([sum(1 for e in g if test(e)) for g in groups], ns)
+        return fs.versus(name, "proportion", grf["p"], grf["se"], p, se)
+
+    length, length_se = fs.seed_mean([[e["steps"] for e in g] for g in groups])
+    grf_length = mix["length"]
+    figures = [
+        share("P(goal for)", mix["goal_for"], lambda e: e["goals_for"] > 0),
+        share("P(goal against)", mix["goal_against"], lambda e: e["goals_against"] > 0),
+        fs.versus(
+            "episode length", "length", grf_length["mean"], grf_length["se"], length, length_se
+        ),
+    ]
+    for end in cases.ENDS:
+
+        def ends_so(e: dict[str, Any], end: str = end) -> bool:
+            return bool(e["end"] == end)
+
+        figures.append(share(f"ends {end}", mix["ends"][end], ends_so))
+    others = sum(e["end"] == "other" for e in episodes)
+    if others:  # done on none of GRF's four conditions: a touchline end GRF does not have
+        figures.append(fs.info("ends other", 0.0, others / len(episodes)))
+    return figures
+
+
 def compare_texture(case: dict[str, Any], episodes: list[dict[str, Any]]) -> list[fs.Figure]:
     """§4: per-match statistics against GRF's (samples pooled), real football's in the note."""
     ref, real = case["ref"], case["real"]
@@ -293,10 +347,19 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=0, help="base seed of every case's seed")
     parser.add_argument("--workers", type=int, default=2, help="processes running cases")
     parser.add_argument("--json", type=Path, help="write every figure and episode here")
+    parser.add_argument(
+        "--single-seed",
+        action="store_true",
+        help="academy cases against GRF's first, one-seed figures, one engine seed per case",
+    )
     args = parser.parse_args(argv)
 
     reference = json.loads(REFERENCE.read_text())
+    seed_mix = json.loads(SEED_MIX.read_text()) if SEED_MIX.exists() else {"cases": {}}
     selected = [c for c in build_cases(reference) if args.cases in c["id"]]
+    for case in selected:
+        measured = seed_mix["cases"].get(case["id"])
+        case["mix"] = None if args.single_seed or measured is None else measured["pooled"]
     if not selected:
         print(f"no case matches {args.cases!r}", file=sys.stderr)
         return 2
@@ -315,6 +378,8 @@ def main(argv: list[str] | None = None) -> int:
     wall = time.perf_counter() - start
 
     print(f"GRF: {reference['source']}")
+    if any(c["mix"] for c in selected):
+        print(f"Academy drills (seed-mixed): {seed_mix['source']}")
     print(
         f"touchline: through touchline.compat.gfootball, base seed {args.seed}, "
         f"n × {args.n_scale}\n"

@@ -67,6 +67,29 @@ def case_seed(base_seed: int, case_id: str) -> int:
     return zlib.crc32(f"{base_seed}:{case_id}".encode())
 
 
+#: Engine seeds an academy case's episodes are split over, even and odd alternately: GRF's seed
+#: parity sets the order in which its engine processes the two teams, and left to itself GRF draws
+#: a new seed every episode (`seed_spread.py`). A policy that plays the same actions every episode
+#: (idle) gets one seed per episode: with one engine seed GRF plays such an episode the same way
+#: every time, so only new seeds give new episodes.
+ENGINE_SEEDS = 8
+
+
+def engine_seeds(policy: str, n: int) -> int:
+    """How many engine seeds a case's n episodes are split over (`ENGINE_SEEDS`)."""
+    return ENGINE_SEEDS if policy == "random" else n
+
+
+def engine_seed(base_seed: int, case_id: str, k: int) -> int:
+    """The k-th engine seed of a case: stable, and even or odd as k is."""
+    return (case_seed(base_seed + k, case_id) & ~1) | (k & 1)
+
+
+def split(n: int, seeds: int) -> list[int]:
+    """n episodes over `seeds` seeds, as evenly as possible (the first get one more)."""
+    return [n // seeds + (k < n % seeds) for k in range(seeds)]
+
+
 def make_env(scenario: str, seed: int, builtin_ai: bool = False) -> FootballEnv:
     """One env of a case, seeded (GRF picks a random engine seed; a fixed one makes runs repeat)."""
     options: dict[str, Any] = {"game_engine_random_seed": seed}
@@ -397,3 +420,16 @@ def run_episodes(
     env = make_env(scenario, seed, builtin_ai=builtin)
     chosen = make_policy(policy, env, seed) if isinstance(policy, str) else policy(env)
     return [run_episode(env, chosen, with_stats=with_stats) for _ in range(n)]
+
+
+def run_over_seeds(
+    scenario: str, policy: str, n: int, base_seed: int, case_id: str
+) -> list[list[Episode]]:
+    """n episodes of a reference case split evenly over its engine seeds (`engine_seeds`,
+    `engine_seed`), one env each: the samples, one list of episodes per seed."""
+    seeds = engine_seeds(policy, n)
+    return [
+        run_episodes(scenario, policy, count, engine_seed(base_seed, case_id, k))
+        for k, count in enumerate(split(n, seeds))
+        if count
+    ]

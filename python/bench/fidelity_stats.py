@@ -9,6 +9,10 @@ A figure differs from GRF's (is flagged) when |Δ| > 3·sqrt(se_GRF² + se_touch
     of p̃, so that "0 in 5 matches" is not infinitely sure either;
   * an episode length is flagged only if it is ALSO more than 10 % off GRF's mean, since some GRF
     lengths have almost no spread (151.3 ± 0.1).
+Cases run over several engine seeds (the academy drills: GRF's outcome depends on the seed well
+beyond sampling noise, see `seed_spread.py`) pool their samples, and each pooled figure's se is the
+larger of the one-sample se above and the spread of the per-seed values over sqrt(seeds)
+(`seed_proportion`, `seed_mean`), on both sides.
 A bound (GRF's probes gave a range, not an se) is flagged when touchline's value is beyond it; a
 `near` figure (a probe GRF repeats exactly) when touchline's mean is further from GRF's than its
 tolerance; an `info` figure is shown and never flagged.
@@ -134,3 +138,33 @@ def pooled(samples: Sequence[tuple[int, float, float]]) -> tuple[int, float, flo
     grand = sum(n * m for n, m, _ in samples) / total
     squares = sum((n - 1) * (se * math.sqrt(n)) ** 2 + n * (m - grand) ** 2 for n, m, se in samples)
     return total, grand, math.sqrt(squares / (total - 1)) / math.sqrt(total)
+
+
+def seed_proportion(counts: Sequence[int], ns: Sequence[int]) -> tuple[float, float]:
+    """A proportion pooled over per-seed samples (count k_i of n_i each): p and its se, the larger
+    of the p̃ se of the pooled sample and the spread of the per-seed proportions over sqrt(seeds)."""
+    n = sum(ns)
+    p = sum(counts) / n
+    spread = [k / m for k, m in zip(counts, ns, strict=True)]
+    between = statistics.stdev(spread) / math.sqrt(len(spread)) if len(spread) > 1 else 0.0
+    return p, max(proportion_se(sum(counts), n), between)
+
+
+def seed_mean(samples: Sequence[Sequence[float]]) -> tuple[float, float]:
+    """A mean pooled over per-seed samples: the grand mean and its se, the larger of the pooled
+    sample's se and the spread of the per-seed means over sqrt(seeds)."""
+    values = [v for sample in samples for v in sample]
+    means = [statistics.fmean(sample) for sample in samples]
+    between = statistics.stdev(means) / math.sqrt(len(means)) if len(means) > 1 else 0.0
+    return statistics.fmean(values), max(sample_se(values), between)
+
+
+def versus(name: str, kind: str, grf: float, grf_se: float, value: float, se: float) -> Figure:
+    """GRF's figure and touchline's, each with its se as given; `kind` length adds the 10 % rule."""
+    z = _z(value - grf, grf_se, se)
+    flagged = abs(z) > Z_LIMIT
+    note = ""
+    if kind == "length" and flagged and abs(value - grf) <= LENGTH_TOLERANCE * grf:
+        flagged = False
+        note = "within 10 %"
+    return Figure(name, kind, grf, grf_se, value, se, z, flagged, note)

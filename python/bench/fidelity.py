@@ -193,14 +193,16 @@ def compare(case: dict[str, Any], episodes: list[dict[str, Any]]) -> list[fs.Fig
             figures.append(fs.info("ends other", 0.0, others / n))
         return figures
     if section == "match":
+        # GRF's matches over one engine seed each when measured so (`seed_spread.py`).
+        grf = case.get("mix") or ref
         return [
             fs.mean(
                 f"goals {side} / match",
-                ref[f"goals_{side}"]["mean"],
-                ref[f"goals_{side}"]["se"],
+                grf[f"goals_{side}"]["mean"],
+                grf[f"goals_{side}"]["se"],
                 [e[f"goals_{side}"] for e in episodes],
                 kind="count",
-                grf_n=ref["n"],
+                grf_n=grf[f"goals_{side}"].get("n", ref["n"]),
             )
             for side in ("for", "against")
         ]
@@ -360,6 +362,13 @@ def main(argv: list[str] | None = None) -> int:
     for case in selected:
         measured = seed_mix["cases"].get(case["id"])
         case["mix"] = None if args.single_seed or measured is None else measured["pooled"]
+        if case["mix"] and case["section"] == "match":
+            case["n"] = case["mix"]["goals_for"]["n"]
+            goals = measured["matches"]
+            case["ref"] = {
+                **case["ref"],
+                "scores": [f"{a}-{b}" for a, b in zip(goals["for"], goals["against"], strict=True)],
+            }
     if not selected:
         print(f"no case matches {args.cases!r}", file=sys.stderr)
         return 2

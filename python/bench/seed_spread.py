@@ -46,6 +46,8 @@ SOURCE = (
     "larger of the pooled sample's and the per-seed values' spread over sqrt(seeds). Measured "
     "2026-11-25 (issue 15)."
 )
+#: Full matches per match case, one engine seed each (the first reference played 5 with one seed).
+MATCHES = 10
 #: The base seed of the engine seeds measured (`fidelity_cases.engine_seed`); the harness's runs of
 #: touchline start from 0.
 BASE_SEED = 1000
@@ -97,6 +99,9 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cases", default="", help="only case ids containing this")
     parser.add_argument("--json", type=Path, default=SEED_MIX, help="where to write the figures")
+    parser.add_argument(
+        "--matches", type=int, default=MATCHES, help="full matches per match case, one seed each"
+    )
     args = parser.parse_args(argv)
     reference = json.loads(REFERENCE.read_text())
     out: dict[str, Any] = {"source": SOURCE, "cases": {}}
@@ -112,6 +117,28 @@ def main(argv: list[str] | None = None) -> int:
         print(
             f"{case_id}: length {pooled['length']['mean']:.1f} ± {pooled['length']['se']:.1f}; {ends}"
         )
+        sys.stdout.flush()
+        args.json.write_text(json.dumps(out, indent=1))
+    for ref in reference["full_match"]["cases"]:
+        case_id = f"match {ref['scenario']} {ref['policy']}"
+        if args.cases not in case_id:
+            continue
+        # One match per engine seed, so every match is a new draw of GRF's parity and randomness.
+        runs = cases.run_over_seeds(
+            ref["scenario"], ref["policy"], args.matches, BASE_SEED, case_id
+        )
+        goals = {
+            side: [e.goals_for if side == "for" else e.goals_against for r in runs for e in r]
+            for side in ("for", "against")
+        }
+        out["cases"][case_id] = {
+            "matches": goals,
+            "pooled": {
+                f"goals_{side}": {"mean": statistics.fmean(g), "se": fs.sample_se(g), "n": len(g)}
+                for side, g in goals.items()
+            },
+        }
+        print(f"{case_id}: goals for {goals['for']}, against {goals['against']}")
         sys.stdout.flush()
         args.json.write_text(json.dumps(out, indent=1))
     return 0

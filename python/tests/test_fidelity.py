@@ -18,6 +18,7 @@ BENCH = Path(__file__).resolve().parents[1] / "bench"
 sys.path.insert(0, str(BENCH))
 
 import fidelity_cases as cases  # noqa: E402 (found through BENCH)
+import fidelity_stats as fs  # noqa: E402 (found through BENCH)
 
 STDLIB = Path(__file__).resolve().parents[2] / "stdlib-scenarios"
 
@@ -132,3 +133,31 @@ def test_the_flow_of_play_counts_spells_of_one_owner_and_of_a_loose_ball() -> No
     assert stats.loose_spells == [2, 1]
     assert summary["loose_share"] == 3 / 7
     assert summary["owned_spell"] == 2.0 and summary["loose_spell"] == 1.5
+
+
+def test_figures_pooled_over_engine_seeds_count_the_spread_between_seeds() -> None:
+    # GRF's figures depend on its engine seed (its parity orders the teams' processing), so the
+    # harness splits a case over seeds of both parities and widens the se by their spread.
+    assert [cases.engine_seed(0, "academy x random", k) % 2 for k in range(4)] == [0, 1, 0, 1]
+    assert cases.split(50, 8) == [7, 7, 6, 6, 6, 6, 6, 6]
+    same, same_se = fs.seed_proportion([5, 5], [10, 10])
+    assert same == 0.5 and same_se == fs.proportion_se(10, 20)
+    apart, apart_se = fs.seed_proportion([0, 10], [10, 10])
+    assert apart == 0.5 and abs(apart_se - 0.5) < 1e-9
+    mean, mean_se = fs.seed_mean([[1.0, 1.0], [3.0, 3.0]])
+    assert mean == 2.0 and abs(mean_se - 1.0) < 1e-9
+
+
+def test_the_seed_mixed_reference_covers_the_reference_cases() -> None:
+    # Every academy case but the idle single_goal_versus_lazy one (50 × 3,001 steps in GRF, left to
+    # the first reference) and every full-match case has GRF's seed-mixed figures.
+    reference = json.loads((BENCH / "grf_reference.json").read_text())
+    mixed = json.loads((BENCH / "grf_seed_mix.json").read_text())["cases"]
+    wanted = [f"academy {c['scenario']} {c['policy']}" for c in reference["academy"]["cases"]]
+    wanted += [f"match {c['scenario']} {c['policy']}" for c in reference["full_match"]["cases"]]
+    missing = [case for case in wanted if case not in mixed]
+    assert missing == ["academy academy_single_goal_versus_lazy idle"], missing
+    for case in wanted[:-9]:
+        if case in mixed:
+            pooled = mixed[case]["pooled"]
+            assert pooled["n"] >= 50 and 0 < pooled["length"]["mean"] <= 3001, case

@@ -95,13 +95,7 @@ def mean(
     if kind == "count":
         grf_se = count_se(grf_mean, grf_se, grf_n or len(values))
         tl_se = count_se(value, tl_se, len(values))
-    z = _z(value - grf_mean, grf_se, tl_se)
-    flagged = abs(z) > Z_LIMIT
-    note = ""
-    if kind == "length" and flagged and abs(value - grf_mean) <= LENGTH_TOLERANCE * grf_mean:
-        flagged = False
-        note = "within 10 %"
-    return Figure(name, kind, grf_mean, grf_se, value, tl_se, z, flagged, note)
+    return versus(name, kind, grf_mean, grf_se, value, tl_se)
 
 
 def bound(name: str, grf_bound: float, value: float) -> Figure:

@@ -67,11 +67,11 @@ def case_seed(base_seed: int, case_id: str) -> int:
     return zlib.crc32(f"{base_seed}:{case_id}".encode())
 
 
-#: Engine seeds an academy case's episodes are split over, even and odd alternately: GRF's seed
-#: parity sets the order in which its engine processes the two teams, and left to itself GRF draws
-#: a new seed every episode (`seed_spread.py`). A policy that plays the same actions every episode
-#: (idle) gets one seed per episode: with one engine seed GRF plays such an episode the same way
-#: every time, so only new seeds give new episodes.
+#: Engine seeds a random-agent case's episodes are split over, even and odd alternately: GRF's
+#: seed parity sets the order in which its engine processes the two teams, and left to itself GRF
+#: draws a new seed every episode (`seed_spread.py`). A policy that plays the same actions every
+#: episode (idle, builtin_ai) gets one seed per episode: with one engine seed GRF plays such an
+#: episode the same way every time, so only new seeds give new episodes.
 ENGINE_SEEDS = 8
 
 

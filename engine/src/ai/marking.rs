@@ -128,25 +128,13 @@ pub fn assign(view: &MatchView, side: Side, marks: &mut [Option<usize>]) {
 /// team that has been without the ball a while, 0.6): full for the back line and the holding
 /// midfielder, less the further forward he plays.
 fn marking_weight(role: Role) -> f32 {
-    // libm::powf((1.3 − mind_set(role)).clamp(0.0, 1.0), 0.7) for the five mind-sets, bit for bit
+    // libm::powf((1.3 − role.mind_set()).clamp(0.0, 1.0), 0.7) for the five mind-sets, bit for bit
     // (a test checks): a powf per marker and decision was a measurable share of the AI's time.
     match role {
         Role::GK | Role::CB | Role::LB | Role::RB | Role::DM => 1.0,
         Role::CM | Role::LM | Role::RM => 0.855_387_6,
         Role::AM => 0.658_042_4,
         Role::CF => 0.430_511_6,
-    }
-}
-
-/// How attacking a role's mind-set is, 0 (keeper, centre back) to 1 (centre forward): GRF's
-/// mind-set per role, which sets how far he hunts and how much he marks.
-pub fn mind_set(role: Role) -> f32 {
-    match role {
-        Role::GK | Role::CB => 0.0,
-        Role::LB | Role::RB | Role::DM => 0.25,
-        Role::CM | Role::LM | Role::RM => 0.5,
-        Role::AM => 0.75,
-        Role::CF => 1.0,
     }
 }
 
@@ -206,7 +194,7 @@ mod tests {
     #[test]
     fn the_marking_weights_are_powf_of_the_mind_set() {
         for role in Role::ALL {
-            let powf = libm::powf((1.3 - mind_set(role)).clamp(0.0, 1.0), 0.7);
+            let powf = libm::powf((1.3 - role.mind_set()).clamp(0.0, 1.0), 0.7);
             assert_eq!(marking_weight(role).to_bits(), powf.to_bits(), "{role:?}");
         }
     }

@@ -10,20 +10,7 @@ use glam::Vec2;
 use crate::game::KickKind;
 use crate::geometry::TeamFrame;
 use crate::geometry::pitch::HALF_LENGTH;
-use crate::player::{Player, Role, SPRINT_SPEED};
-
-/// How attacking a role plays, in [0, 1] (GRF's role mindset): keepers and centre backs 0, full
-/// backs and the defensive midfielder 0.25, midfielders 0.5, the attacking midfielder 0.75, the
-/// centre forward 1.
-pub(crate) fn mindset(role: Role) -> f32 {
-    match role {
-        Role::GK | Role::CB => 0.0,
-        Role::LB | Role::RB | Role::DM => 0.25,
-        Role::CM | Role::LM | Role::RM => 0.5,
-        Role::AM => 0.75,
-        Role::CF => 1.0,
-    }
-}
+use crate::player::{Player, SPRINT_SPEED};
 
 /// How free of opponents the point `focus` (team frame, m) will be in `time` s, in [0, 1]: each
 /// outfield opponent, from where his run takes him in 0.2 s, sprints towards it for the rest of
@@ -138,7 +125,7 @@ pub(crate) fn choose(
     ball_velocity: Vec2,
 ) -> Option<PassChoice> {
     let frame = TeamFrame::of(me.side);
-    let mindset = mindset(me.role);
+    let mindset = me.role.mind_set();
     // Held for 5 s or more, any sensible pass will do.
     let held = (owned_ticks as f32 / 500.0).min(1.0);
     let long_possession = held * held;
@@ -193,6 +180,7 @@ pub(crate) fn choose(
 mod tests {
     use super::*;
     use crate::geometry::Side;
+    use crate::player::Role;
 
     fn player(side: Side, index: usize, role: Role, at: Vec2) -> Player {
         Player::new(side, index, role, at, at)
@@ -210,16 +198,6 @@ mod tests {
             player(Side::Right, 1, Role::CB, Vec2::new(30.0, 30.0)),
         ];
         (mates, opponents)
-    }
-
-    #[test]
-    fn the_mindset_runs_from_the_keeper_to_the_centre_forward() {
-        assert_eq!(mindset(Role::GK), 0.0);
-        assert_eq!(mindset(Role::CB), 0.0);
-        assert_eq!(mindset(Role::RB), 0.25);
-        assert_eq!(mindset(Role::CM), 0.5);
-        assert_eq!(mindset(Role::AM), 0.75);
-        assert_eq!(mindset(Role::CF), 1.0);
     }
 
     #[test]

@@ -4,7 +4,6 @@
 
 use glam::Vec2;
 
-use super::marking::mind_set;
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::geometry::pitch::HALF_LENGTH;
 use crate::player::{Player, SPRINT_SPEED, difficulty_scale};
@@ -146,7 +145,7 @@ fn cover(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficult
 /// hunt distance): 20 m for a fresh centre back, 10 m for a centre forward, less when tired, all
 /// scaled by 0.3 + 0.7θ.
 fn hunting_distance(p: &Player, theta: f32) -> f32 {
-    (10.0 + 10.0 * (1.0 - mind_set(p.role))) * (0.5 * (1.0 - p.fatigue) + 0.5) * difficulty_scale(theta)
+    (10.0 + 10.0 * (1.0 - p.role.mind_set())) * (0.5 * (1.0 - p.fatigue) + 0.5) * difficulty_scale(theta)
 }
 
 #[cfg(test)]

@@ -164,7 +164,7 @@ pub fn pace(view: &MatchView, p: &crate::player::Player) -> f32 {
         Some(_) => 0.1,
         None => 0.4,
     };
-    let mind_set = marking::mind_set(p.role);
+    let mind_set = p.role.mind_set();
     let by_role = mind_set + possession * (1.0 - 2.0 * mind_set);
     p.max_speed * (1.0 - far * (0.5 + 0.5 * by_role))
 }
@@ -180,7 +180,7 @@ pub fn pace(view: &MatchView, p: &crate::player::Player) -> f32 {
 /// distance from 0.5), as its team AI uses them.
 fn block_x(role: Role, fx: f32, ball_x: f32, p: f32) -> f32 {
     let lerp = |defence: f32, offence: f32| defence + (offence - defence) * p;
-    let mind_set = marking::mind_set(role);
+    let mind_set = role.mind_set();
     let depth = 0.45 * lerp(if matches!(role, Role::AM | Role::CF) { 0.835 } else { 0.71 }, 0.868);
     let own_half = match role {
         Role::LB | Role::RB => lerp(0.465, 0.42),

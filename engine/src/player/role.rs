@@ -90,6 +90,12 @@ mod tests {
     use super::*;
 
     #[test]
+    fn the_mind_set_runs_from_the_keeper_to_the_centre_forward() {
+        let mind_sets = [Role::GK, Role::CB, Role::RB, Role::DM, Role::CM, Role::AM, Role::CF].map(Role::mind_set);
+        assert_eq!(mind_sets, [0.0, 0.0, 0.25, 0.25, 0.5, 0.75, 1.0]);
+    }
+
+    #[test]
     fn names_round_trip_and_numbers_match_grf() {
         for (i, role) in Role::ALL.into_iter().enumerate() {
             assert_eq!(role as usize, i);

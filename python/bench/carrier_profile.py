@@ -29,7 +29,6 @@ Usage (from the repository root):
 
 from __future__ import annotations
 
-import argparse
 import dataclasses
 import math
 import statistics
@@ -115,11 +114,7 @@ def quartiles(values: list[float]) -> str:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("scenario")
-    parser.add_argument("--steps", type=int, default=3000)
-    parser.add_argument("--seed", type=int, default=3)
-    args = parser.parse_args()
+    args = cases.match_arguments(__doc__.split("\n\n")[0], seed=3)
     p = profile(args.scenario, args.steps, args.seed)
     shares = ", ".join(f"{s:.2f}" for s in p.band_shares())
     print(f"carrier steps {len(p.speeds)}; speed m/s {quartiles(p.speeds)}")

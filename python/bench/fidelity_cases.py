@@ -15,6 +15,7 @@ they differ; the last known owner starts at -1 and is updated only on owned step
 
 from __future__ import annotations
 
+import argparse
 import copy
 import math
 import statistics
@@ -172,6 +173,15 @@ class OnceOwned:
 def owns_ball(obs: Observation) -> bool:
     """Our controlled player has the ball."""
     return bool(obs["ball_owned_team"] == 0 and obs["ball_owned_player"] == obs["active"])
+
+
+def match_arguments(description: str, seed: int) -> argparse.Namespace:
+    """The command line of the match-profiling tools: a scenario, `--steps` (3,000) and `--seed`."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("scenario")
+    parser.add_argument("--steps", type=int, default=3000)
+    parser.add_argument("--seed", type=int, default=seed)
+    return parser.parse_args()
 
 
 def make_policy(name: str, env: FootballEnv, seed: int) -> Policy:

@@ -23,7 +23,6 @@ Usage (from the repository root):
 
 from __future__ import annotations
 
-import argparse
 import collections
 import dataclasses
 import math
@@ -99,11 +98,7 @@ def profile(scenario: str, steps: int, seed: int) -> dict[str, list[tuple[float,
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("scenario")
-    parser.add_argument("--steps", type=int, default=3000)
-    parser.add_argument("--seed", type=int, default=1)
-    args = parser.parse_args()
+    args = cases.match_arguments(__doc__.split("\n\n")[0], seed=1)
     kicks = profile(args.scenario, args.steps, args.seed)
     for kind in ("after_own", "first_time"):
         rows = kicks.get(kind, [])

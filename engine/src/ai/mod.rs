@@ -16,6 +16,7 @@ pub mod prediction;
 pub mod pressing;
 pub mod set_piece;
 mod sliding;
+mod support;
 pub mod team_shape;
 
 use std::ops::Range;
@@ -159,6 +160,10 @@ pub struct TeamAi {
     /// Tick of the next man-marking assignment.
     #[serde(default)]
     next_marking: u64,
+    /// Support play off the ball ([`support`]; `None` in a state saved before it, made at the
+    /// next decision).
+    #[serde(default)]
+    support: Option<support::Support>,
 }
 
 impl TeamAi {
@@ -174,6 +179,7 @@ impl TeamAi {
             player_difficulty: Vec::new(),
             marks: vec![None; players],
             next_marking: 0,
+            support: Some(support::Support::new(side)),
         }
     }
 
@@ -201,7 +207,7 @@ impl TeamAi {
             let interval = self.difficulty.reaction_ticks + self.think_carry;
             let whole = interval.floor();
             self.think_carry = interval - whole;
-            self.next_think = view.tick + whole as u64;
+            self.next_think = view.tick.saturating_add(whole as u64);
         }
         for (i, plan) in self.plans.iter_mut().enumerate() {
             if agent_driven[i] || native[i] {
@@ -286,8 +292,10 @@ impl TeamAi {
             self.marks.fill(None);
         } else if view.tick >= self.next_marking || view.owner_ticks == 0 {
             marking::assign(view, side, &mut self.marks);
-            self.next_marking = view.tick + marking::MARKING_TICKS;
+            self.next_marking = view.tick.saturating_add(marking::MARKING_TICKS);
         }
+        let support = self.support.get_or_insert_with(|| support::Support::new(side));
+        support.update(view, &analysis);
         for g in range.clone() {
             let i = g - range.start;
             if native[i] {
@@ -316,6 +324,7 @@ impl TeamAi {
                 Plan { slide: sliding::should_slide(view, g), ..plan }
             } else {
                 let target = team_shape::position(view, g, &analysis, difficulty, self.marks[i]);
+                let target = support.place(view, g, &analysis, target);
                 // Anyone the carrier runs past may slide in (GRF's sliding command is every
                 // AI player's, not the hunter's alone).
                 let slide = sliding::should_slide(view, g);

@@ -142,10 +142,12 @@ fn cover(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficult
 }
 
 /// How far (m) from a carrier player `p` of a team of difficulty `theta` still hunts him (GRF's
-/// hunt distance): 20 m for a fresh centre back, 10 m for a centre forward, less when tired, all
-/// scaled by 0.3 + 0.7θ.
+/// hunt distance): 20 m for a fresh centre back standing, 10 m for a centre forward, half that at
+/// a sprint (GRF's average speed term: a defender racing back does not turn on the carrier until
+/// he is near), less when tired, all scaled by 0.3 + 0.7θ.
 fn hunting_distance(p: &Player, theta: f32) -> f32 {
-    (10.0 + 10.0 * (1.0 - p.role.mind_set())) * (0.5 * (1.0 - p.fatigue) + 0.5) * difficulty_scale(theta)
+    let pace = (p.velocity.length() / SPRINT_SPEED).min(1.0);
+    (10.0 + 10.0 * (1.0 - p.role.mind_set())) * (0.5 * (1.0 - p.fatigue) + 0.5 * (1.0 - pace)) * difficulty_scale(theta)
 }
 
 #[cfg(test)]

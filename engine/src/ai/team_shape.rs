@@ -1,8 +1,8 @@
 //! Team shape, GRF's way (GRF 2.10's team AI): each player takes a slot of GRF's default
 //! formation, whatever the scenario's positions; the slot maps into a block that follows the ball
-//! and the possession, and the micro-focus draws players near the ball towards it. On top,
-//! midfielders near the ball make support runs, forwards run in behind but stay onside; without
-//! the ball, players near an opponent in their zone mark him.
+//! and the possession, and the micro-focus draws players near the ball towards it. With the ball,
+//! runners stay onside (the support field, `ai/support.rs`, moves them off this place);
+//! without it, players near an opponent in their zone mark him.
 
 use glam::Vec2;
 
@@ -75,8 +75,6 @@ pub(crate) fn assign_formation(players: &mut [crate::player::Player], frame: Tea
 
 /// An opponent this close (m) to a player's place in the shape is marked by him.
 const MARK_RADIUS: f32 = 9.0;
-/// A midfielder whose place is this close (m) to the ball makes a support run.
-const SUPPORT_RANGE: f32 = 25.0;
 /// How far goal-side of his man a marker stands (m).
 const MARK_DISTANCE: f32 = 1.8;
 
@@ -87,8 +85,8 @@ pub fn onside_margin(theta: f32) -> f32 {
 }
 
 /// Where player `g` should stand now (m, global frame): his formation slot (`home`) in the block
-/// (`block_x`, `block_y`) drawn towards the ball (`micro_focus`). Forwards in
-/// possession make runs towards goal ahead of the ball, but stay onside; defending players mark an
+/// (`block_x`, `block_y`) drawn towards the ball (`micro_focus`). Players in possession
+/// stay onside; defending players mark an
 /// opponent in their zone, goal-side of him, more tightly at higher θ; a player the team's man
 /// marking gave a man (`man`, global index) marks him instead ([`marking::position`]).
 pub fn position(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, man: Option<usize>) -> Vec2 {
@@ -106,20 +104,6 @@ pub fn position(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Di
     };
     let strength = analysis.micro_focus_strength;
     (x, y) = micro_focus(Vec2::new(x, y), ball, focal, bias, strength);
-    if ours && p.role.is_attacker() && p.home.x > -0.25 * HALF_LENGTH {
-        // Off-the-ball run: get ahead of the ball, towards the goal.
-        x = x.max(ball.x + 8.0);
-    }
-    if ours && view.owner != Some(g) && !p.role.is_defender() && !p.role.is_attacker() && !p.is_keeper() {
-        // Support run: a midfielder near the ball offers a pass ahead of it, on his side of it.
-        if Vec2::new(x, y).distance(ball) < SUPPORT_RANGE {
-            let lateral = if p.home.y >= ball.y { 1.0 } else { -1.0 };
-            let support = Vec2::new(ball.x + 4.0, ball.y + lateral * 8.0);
-            let w = 0.1 + 0.2 * difficulty.theta;
-            x += (support.x - x) * w;
-            y += (support.y - y) * w;
-        }
-    }
     if ours && view.owner != Some(g) {
         // Stay onside: the offside line, less a margin that shrinks with θ.
         x = x.min(analysis.defensive_line - onside_margin(difficulty.theta));
@@ -257,7 +241,7 @@ pub(crate) fn micro_focus_strength(ball_x: f32, p: f32) -> f32 {
 /// GRF's `curve`: `x` in [0, 1] blended with a sine ease (flat at both ends) by `bias`. The sine is
 /// a seventh-order polynomial (within 2e-4 over the half period used): the team shape evaluates it
 /// for every player at every decision, and libm's sine there cost a tenth of a match's step.
-fn curve(x: f32, bias: f32) -> f32 {
+pub(crate) fn curve(x: f32, bias: f32) -> f32 {
     let t = (x - 0.5) * std::f32::consts::PI;
     let t2 = t * t;
     let sine = t * (1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0)));
@@ -269,22 +253,14 @@ fn curve(x: f32, bias: f32) -> f32 {
 /// the possession bias `p` (1: the ball is ours, 0: theirs), the back four a little wider with the
 /// ball; its centre follows the ball, shrunk towards the middle; the formation's place (`home`, m)
 /// maps linearly into it. Then players drift across towards the ball's side (GRF's y-focus). With
-/// the ball, the full backs and the wide midfielders take the width of the pitch (at least 60 %
-/// and 80 % of the half-width out): play that looks like football, beyond GRF's narrower shape.
+/// the ball the support field (`ai/support.rs`) spreads the team further.
 fn block_y(role: Role, home: Vec2, ball: Vec2, p: f32) -> f32 {
     let lerp = |defence: f32, offence: f32| defence + (offence - defence) * p;
-    let wide_midfield = matches!(role, Role::LM | Role::RM);
     let width = 0.95 * if role.is_defender() { lerp(0.84, 1.0) } else { lerp(0.84, 0.948) };
     let centre_y = ball.y * ((1.0 - width) * 0.9 + 0.1);
     // Formation places in GRF's [-1, 1] units: y over 36 m.
     let hy = home.y / 36.0;
-    let mut y = centre_y + hy * width * HALF_WIDTH;
-    if p > 0.5 && (matches!(role, Role::LB | Role::RB) || wide_midfield) {
-        let out = if wide_midfield { 0.85 } else { 0.7 } * HALF_WIDTH * (2.0 * p - 1.0);
-        if y.abs() < out {
-            y = out.copysign(if hy != 0.0 { hy } else { y });
-        }
-    }
+    let y = centre_y + hy * width * HALF_WIDTH;
     // Drift across towards the ball's side: stronger with the ball and when it is wide.
     let across = (0.5 * p + 0.2 * (1.0 - p))
         * (1.0 - (ball.y - y).abs() / (2.0 * HALF_WIDTH)).max(0.0)

@@ -45,9 +45,13 @@ const FIRST_STEP_TICKS: u64 = 10;
 /// shot pressed on steps 2-4, before that, is struck with his first touch: half the episodes
 /// never show him with the ball before his first kick.
 const FIRST_TOUCH_TICK: u64 = 35;
-/// Standing tackle: range (m) and success chance per tick at equal skill.
+/// How near (m) a challenger must be to the carrier's ball to trip him.
 const TACKLE_RANGE: f32 = 0.9;
-const TACKLE_CHANCE: f32 = 0.025;
+/// A standing tackle (GRF's interfere) is started with the ball this near (m; GRF's animations
+/// reach about 1.3 m) ...
+const INTERFERE_REACH: f32 = 1.3;
+/// ... and its touch lands this many ticks later, drawn uniformly (GRF: 150-250 ms).
+const INTERFERE_TICKS: (u16, u16) = (15, 25);
 /// Sliding tackle reach (m).
 const SLIDE_REACH: f32 = 1.3;
 /// Distance between two players' centres (m) at which a slide meets the man.
@@ -119,7 +123,7 @@ impl Match {
                 self.claimed(owner, q);
                 return;
             }
-            if d2 >= TACKLE_RANGE * TACKLE_RANGE {
+            if d2 >= INTERFERE_REACH * INTERFERE_REACH {
                 continue;
             }
             if p.is_keeper() && p.velocity.length_squared() > KEEPER_TACKLE_SPEED * KEEPER_TACKLE_SPEED {
@@ -127,26 +131,37 @@ impl Match {
                 // of its own): running back to his line past a carrier, he leaves the ball.
                 continue;
             }
-            let likeliness = duel_likeliness(p.position, self.players[owner].position, ball);
-            let dribbling = self.inputs[owner].dribble;
-            let control = self.skill_of(owner, self.players[owner].attributes.ball_control).max(0.05);
-            let odds = if likeliness < MIN_DUEL_LIKELINESS {
+            let carrier_at = self.players[owner].position;
+            if duel_likeliness(p.position, carrier_at, ball) < MIN_DUEL_LIKELINESS {
                 // Behind the carrier, with his body between him and the ball: no way to it.
-                0.0
-            } else {
-                TACKLE_CHANCE * likeliness * (0.3 + tackling) / (0.3 + control) * if dribbling { 0.6 } else { 1.0 }
-            };
-            let roll = self.rng.unit();
-            if roll < odds {
-                self.tackled(owner, q);
-                return;
+                continue;
             }
-            if odds == 0.0 {
-                // No tackle attempted, so no trip: GRF's standing foul needs a tackling player.
+            match p.interfere_ticks {
+                0 => {
+                    // GRF's standing tackle (its interfere): started whenever the ball is in
+                    // reach, its touch lands 150-250 ms later.
+                    let wind_up = INTERFERE_TICKS.0
+                        + (self.rng.unit() * (INTERFERE_TICKS.1 - INTERFERE_TICKS.0 + 1) as f32) as u16;
+                    self.players[q].interfere_ticks = wind_up;
+                }
+                1 => {
+                    // The touch: nearer the ball than the carrier, he takes it cleanly; else he
+                    // knocks it away from himself.
+                    if d2 < carrier_at.distance_squared(ball) {
+                        self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
+                        self.take_ball(q);
+                    } else {
+                        self.tackled(owner, q);
+                    }
+                    return;
+                }
+                _ => {}
+            }
+            if d2 >= TACKLE_RANGE * TACKLE_RANGE {
                 continue;
             }
             let trip = fouls::trip_chance(&self.players[q], &self.players[owner], tackling);
-            if roll < odds + trip {
+            if self.rng.unit() < trip {
                 // A trip: the carrier stumbles and may lose the ball; the referee plays advantage.
                 let severity = fouls::standing_severity(&self.players[q], &self.players[owner], self.rng.unit());
                 self.players[q].touch_cooldown = TACKLED_COOLDOWN;
@@ -195,13 +210,18 @@ impl Match {
         let ball = self.ball.xy();
         let tackler = &self.players[q];
         let away = (ball - tackler.position).normalize_or(tackler.facing);
-        let push = if tackler.is_sliding() { 6.0 } else { 4.0 };
+        let sliding = tackler.is_sliding();
+        let push = if sliding { 6.0 } else { 4.0 };
         let lift = 1.0 + self.rng.noise(0.5);
         self.ball.velocity = (tackler.velocity * 0.5 + away * push).extend(lift);
         self.owner = None;
         self.last_touch = Some(q);
         self.touch_tick = self.in_play_ticks;
-        self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
+        if sliding {
+            // Brought down or beaten by the slide; a standing tackle's knock leaves the carrier
+            // free to play the ball again at once (GRF's interfere).
+            self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
+        }
         self.touched(q);
     }
 

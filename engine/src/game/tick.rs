@@ -99,6 +99,7 @@ impl Match {
         let loose = self.owner.is_none();
         for p in &mut self.players {
             p.touch_cooldown = p.touch_cooldown.saturating_sub(1);
+            p.interfere_ticks = p.interfere_ticks.saturating_sub(1);
             p.dive_ticks = p.dive_ticks.saturating_sub(1);
             if let Some((kick, left)) = p.queued_kick {
                 // Forgotten once someone has the ball, or a second after its wind-up if he has

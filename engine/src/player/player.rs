@@ -61,6 +61,9 @@ pub struct Player {
     /// after that. He never shows as the ball's owner.
     #[serde(default)]
     pub(crate) queued_kick: Option<(Kick, u16)>,
+    /// Ticks until the touch of a standing tackle he has started lands (0: none).
+    #[serde(default)]
+    pub(crate) interfere_ticks: u16,
 }
 
 /// Walking speed (m/s) with a direction and no modifier (docs/grf-compatibility.md#action-effects).
@@ -96,6 +99,7 @@ impl Player {
             kick_run: Vec2::ZERO,
             queued_kick: None,
             controlling_ball: false,
+            interfere_ticks: 0,
         }
     }
 
@@ -126,6 +130,7 @@ impl Player {
         self.pending_kick = None;
         self.touch_cooldown = 0;
         self.queued_kick = None;
+        self.interfere_ticks = 0;
     }
 }
 

@@ -60,7 +60,7 @@ impl Role {
         matches!(self, Role::CB | Role::LB | Role::RB)
     }
 
-    /// Whether the role is a forward's or attacking midfielder's: these make runs in behind.
+    /// Whether the role is a forward's, attacking or wide midfielder's: these go into the box at a corner.
     pub fn is_attacker(self) -> bool {
         matches!(self, Role::CF | Role::AM | Role::LM | Role::RM)
     }

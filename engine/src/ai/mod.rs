@@ -179,7 +179,7 @@ impl TeamAi {
             player_difficulty: Vec::new(),
             marks: vec![None; players],
             next_marking: 0,
-            support: Some(support::Support::new(side, players)),
+            support: Some(support::Support::new(side)),
         }
     }
 
@@ -294,7 +294,7 @@ impl TeamAi {
             marking::assign(view, side, &mut self.marks);
             self.next_marking = view.tick.saturating_add(marking::MARKING_TICKS);
         }
-        let support = self.support.get_or_insert_with(|| support::Support::new(side, range.len()));
+        let support = self.support.get_or_insert_with(|| support::Support::new(side));
         support.update(view, &analysis);
         for g in range.clone() {
             let i = g - range.start;
@@ -324,7 +324,7 @@ impl TeamAi {
                 Plan { slide: sliding::should_slide(view, g), ..plan }
             } else {
                 let target = team_shape::position(view, g, &analysis, difficulty, self.marks[i]);
-                let target = support.place(view, g, i, &analysis, target);
+                let target = support.place(view, g, &analysis, target);
                 // Anyone the carrier runs past may slide in (GRF's sliding command is every
                 // AI player's, not the hunter's alone).
                 let slide = sliding::should_slide(view, g);

@@ -24,10 +24,6 @@ const RUN_CHECK_TICKS: u64 = 50;
 const RUN_TICKS: u64 = 400;
 /// A run is made when the runner's conditions rate at least this (GRF's 0.5).
 const RUN_RATING: f32 = 0.5;
-/// Ticks a player keeps the field's answer before it is worked out again (100 ms, GRF's
-/// reaction time; the field for every player at every decision was a third of a match's step),
-/// sooner when the ball changes hands.
-const FIELD_TICKS: u64 = 10;
 
 /// One team's support state: its fading possession and who supports and who runs.
 #[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
@@ -47,32 +43,12 @@ pub(crate) struct Support {
     runner: Option<(usize, u64)>,
     /// Tick of the next look for a runner.
     next_run_check: u64,
-    /// Per player of the team (by index in it): where the field took him last (m, global).
-    #[serde(default)]
-    fields: Vec<Option<Vec2>>,
-    /// Tick at which the fields are next worked out afresh.
-    #[serde(default)]
-    next_fields: u64,
-    /// Whether this decision works them out afresh.
-    #[serde(default)]
-    refresh: bool,
 }
 
 impl Support {
-    /// The state of `side`'s `players` at kickoff (GRF starts both teams' fading possession at 1).
-    pub(crate) fn new(side: Side, players: usize) -> Support {
-        Support {
-            side,
-            fading: 1.0,
-            updated: 0,
-            forward: None,
-            next_forward: 0,
-            runner: None,
-            next_run_check: 0,
-            fields: vec![None; players],
-            next_fields: 0,
-            refresh: true,
-        }
+    /// The state of `side` at kickoff (GRF starts both teams' fading possession at 1).
+    pub(crate) fn new(side: Side) -> Support {
+        Support { side, fading: 1.0, updated: 0, forward: None, next_forward: 0, runner: None, next_run_check: 0 }
     }
 
     /// Brings the state up to `view.tick` for the team whose analysis is `analysis`: the fading
@@ -80,10 +56,6 @@ impl Support {
     /// decision.
     pub(crate) fn update(&mut self, view: &MatchView, analysis: &Analysis) {
         let side = self.side;
-        self.refresh = view.tick >= self.next_fields || view.owner_ticks == 0;
-        if self.refresh {
-            self.next_fields = view.tick.saturating_add(FIELD_TICKS);
-        }
         let ours = view.owner_side() == Some(side);
         let ticks = view.tick.saturating_sub(self.updated);
         self.updated = view.tick;
@@ -127,32 +99,18 @@ impl Support {
         }
     }
 
-    /// Where player `g` (the team's `i`-th) goes in open play, given his place in the shape
-    /// `place` (m, global): the place, or, as far as the team's fading possession has it
-    /// attacking, a blend with where the support field takes him. Players of a team without the
-    /// ball keep `place`.
-    pub(crate) fn place(&mut self, view: &MatchView, g: usize, i: usize, analysis: &Analysis, place: Vec2) -> Vec2 {
+    /// Where player `g` of the team goes in open play, given his place in the shape `place` (m,
+    /// global): the place, or, as far as the team's fading possession has it attacking, a blend
+    /// with where the support field takes him. Players of a team without the ball keep `place`.
+    pub(crate) fn place(&self, view: &MatchView, g: usize, analysis: &Analysis, place: Vec2) -> Vec2 {
         let p = &view.players[g];
         let bias = attack_bias(p.role, self.fading);
         if bias <= 0.0 || p.is_keeper() || view.mode != GameMode::Normal {
             return place;
         }
         let Some(main) = main_man(view, self.side, analysis) else { return place };
-        if i >= self.fields.len() {
-            // A state saved before the fields were kept: size them once.
-            self.fields.resize(view.ranges[self.side.index()].len(), None);
-        }
-        let field = match self.fields.get(i).copied().flatten() {
-            Some(field) if !self.refresh => field,
-            _ => {
-                let runs = self.runner.is_some_and(|(r, _)| r == g) && bias > run_threshold(p.role);
-                let field = self.field_position(view, g, main, analysis, place, runs);
-                if let Some(slot) = self.fields.get_mut(i) {
-                    *slot = Some(field);
-                }
-                field
-            }
-        };
+        let runs = self.runner.is_some_and(|(r, _)| r == g) && bias > run_threshold(p.role);
+        let field = self.field_position(view, g, main, analysis, place, runs);
         place.lerp(field, bias)
     }
 
@@ -182,7 +140,7 @@ impl Support {
         } else {
             let lane_y = -main_at.y.signum() * 8.0;
             let near_lane = 1.0 - ((lane_y - at.y).abs() / 30.0).min(1.0);
-            origin.x += mind_set * mind_set.sqrt() * 22.0 * sine_ease(near_lane);
+            origin.x += libm::powf(mind_set, 1.5) * 22.0 * sine_ease(near_lane);
         }
         let pull = 0.7 * (0.3 + 0.7 * (origin.distance(at) / 20.0).min(1.0));
         field.attract_constant(origin, pull);
@@ -308,8 +266,8 @@ fn nearest(view: &MatchView, side: Side, at: Vec2, except: Option<usize>) -> Opt
         })
 }
 
-/// The `K` active players of `side` nearest `at` (m, team frame `frame`), `except` left out,
-/// nearest first; fewer when the team has fewer. No allocation.
+/// The `K` active players of `side` nearest `at` (m, team frame `frame`), `except` left out, in no
+/// particular order; fewer when the team has fewer. No allocation.
 fn nearest_k<const K: usize>(
     view: &MatchView,
     side: Side,
@@ -317,24 +275,18 @@ fn nearest_k<const K: usize>(
     at: Vec2,
     except: Option<usize>,
 ) -> impl Iterator<Item = usize> {
-    // Kept sorted, nearest first: a candidate nearer than the last slides in.
     let mut best = [(f32::INFINITY, usize::MAX); K];
-    let at = frame.vec2(at);
     for g in view.ranges[side.index()].clone() {
         let q = &view.players[g];
         if Some(g) == except || !q.active {
             continue;
         }
-        let d = q.position.distance_squared(at);
-        if d >= best[K - 1].0 {
-            continue;
+        let d = frame.vec2(q.position).distance_squared(at);
+        if let Some(worst) = (0..K).max_by(|&a, &b| best[a].0.total_cmp(&best[b].0))
+            && d < best[worst].0
+        {
+            best[worst] = (d, g);
         }
-        let mut k = K - 1;
-        while k > 0 && best[k - 1].0 > d {
-            best[k] = best[k - 1];
-            k -= 1;
-        }
-        best[k] = (d, g);
     }
     best.into_iter().filter(|&(_, g)| g != usize::MAX).map(|(_, g)| g)
 }
@@ -368,45 +320,35 @@ impl Field {
     }
 
     fn attract_constant(&mut self, origin: Vec2, power: f32) {
-        let to = origin - self.at;
-        self.pull(to, to.length(), power);
+        self.add(origin, power, true);
     }
 
     fn attract(&mut self, origin: Vec2, power: f32, reach: f32) {
-        let to = origin - self.at;
-        let d = to.length();
-        if d < reach {
-            self.pull(to, d, power * (1.0 - d / reach));
-        }
+        let near = (1.0 - self.at.distance(origin) / reach).clamp(0.0, 1.0);
+        self.add(origin, power * near, true);
     }
 
-    /// A push away from `origin` within `reach`, `exp` 1, 0.7 or 0.5 (the square root, exact).
     fn repel(&mut self, origin: Vec2, power: f32, reach: f32, exp: f32) {
-        let to = origin - self.at;
-        let d = to.length();
-        if d >= reach || d == 0.0 {
-            return;
-        }
-        let near = 1.0 - d / reach;
-        let near = if exp == 1.0 {
-            near
-        } else if exp == 0.5 {
-            near.sqrt()
-        } else {
-            libm::powf(near, exp)
-        };
-        let force = power * near;
-        self.sum -= to * (force / d);
-        self.weight += force;
+        let near = (1.0 - self.at.distance(origin) / reach).clamp(0.0, 1.0);
+        let near = if exp == 1.0 { near } else { libm::powf(near, exp) };
+        self.add(origin, power * near, false);
     }
 
-    /// A pull along `to` (length `d`), damped within 7 m so that the player does not overshoot.
-    fn pull(&mut self, to: Vec2, d: f32, force: f32) {
-        if force <= 0.0 || d == 0.0 {
+    fn add(&mut self, origin: Vec2, force: f32, attract: bool) {
+        if force <= 0.0 {
             return;
         }
-        let damp = if d < 7.0 { d / 7.0 } else { 1.0 };
-        self.sum += to * (force * damp / d);
+        let to = origin - self.at;
+        let d = to.length();
+        let mut dir = to.normalize_or_zero();
+        if attract {
+            if d < 7.0 {
+                dir *= d / 7.0;
+            }
+        } else {
+            dir = -dir;
+        }
+        self.sum += dir * force;
         self.weight += force;
     }
 

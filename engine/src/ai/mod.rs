@@ -160,6 +160,10 @@ pub struct TeamAi {
     /// Tick of the next man-marking assignment.
     #[serde(default)]
     next_marking: u64,
+    /// The carrier (global index) at the last man-marking assignment: a new one (or the ball
+    /// coming loose) is marked afresh at once.
+    #[serde(default)]
+    marking_owner: Option<usize>,
     /// Support play off the ball ([`support`]; `None` in a state saved before it, made at the
     /// next decision).
     #[serde(default)]
@@ -179,7 +183,8 @@ impl TeamAi {
             player_difficulty: Vec::new(),
             marks: vec![None; players],
             next_marking: 0,
-            support: Some(support::Support::new(side)),
+            marking_owner: None,
+            support: Some(support::Support::new(side, players)),
         }
     }
 
@@ -265,6 +270,9 @@ impl TeamAi {
         if !self.think_carry.is_finite() {
             return Err(format!("the {side} AI's timing is not finite"));
         }
+        if let Some(support) = &self.support {
+            support.check(players).map_err(|e| format!("the {side} AI: {e}"))?;
+        }
         Ok(())
     }
 
@@ -290,11 +298,15 @@ impl TeamAi {
         }
         if !defending {
             self.marks.fill(None);
-        } else if view.tick >= self.next_marking || view.owner_ticks == 0 {
+            self.marking_owner = view.owner;
+        } else if view.tick >= self.next_marking || view.owner != self.marking_owner {
+            // Not at every decision while the ball is loose: once when it comes loose, then
+            // every 400 ms as at any time.
             marking::assign(view, side, &mut self.marks);
             self.next_marking = view.tick.saturating_add(marking::MARKING_TICKS);
+            self.marking_owner = view.owner;
         }
-        let support = self.support.get_or_insert_with(|| support::Support::new(side));
+        let support = self.support.get_or_insert_with(|| support::Support::new(side, range.len()));
         support.update(view, &analysis);
         for g in range.clone() {
             let i = g - range.start;
@@ -324,7 +336,7 @@ impl TeamAi {
                 Plan { slide: sliding::should_slide(view, g), ..plan }
             } else {
                 let target = team_shape::position(view, g, &analysis, difficulty, self.marks[i]);
-                let target = support.place(view, g, &analysis, target);
+                let target = support.place(view, g, i, &analysis, target);
                 // Anyone the carrier runs past may slide in (GRF's sliding command is every
                 // AI player's, not the hunter's alone).
                 let slide = sliding::should_slide(view, g);

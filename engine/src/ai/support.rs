@@ -12,9 +12,9 @@ use glam::Vec2;
 
 use super::{Analysis, MatchView};
 use crate::game::GameMode;
+use crate::geometry::Side;
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
-use crate::geometry::{Side, TeamFrame};
-use crate::player::{Role, SPRINT_SPEED};
+use crate::player::{MAX_PLAYERS_PER_TEAM, Role, SPRINT_SPEED};
 
 /// Ticks between two choices of the forward support player (GRF: 1.5 s).
 const FORWARD_SUPPORT_TICKS: u64 = 150;
@@ -24,6 +24,12 @@ const RUN_CHECK_TICKS: u64 = 50;
 const RUN_TICKS: u64 = 400;
 /// A run is made when the runner's conditions rate at least this (GRF's 0.5).
 const RUN_RATING: f32 = 0.5;
+/// Ticks a player keeps the field's answer before it is worked out again (100 ms, GRF's
+/// reaction time; the field for every player at every decision was a third of a match's step),
+/// sooner when the ball changes hands (a carrier found or lost).
+const FIELD_TICKS: u64 = 10;
+/// When the ball's path is kept out of (s ahead; GRF's).
+const BALL_PATH_TIMES: [f32; 4] = [0.2, 0.35, 0.5, 0.65];
 
 /// One team's support state: its fading possession and who supports and who runs.
 #[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
@@ -43,12 +49,71 @@ pub(crate) struct Support {
     runner: Option<(usize, u64)>,
     /// Tick of the next look for a runner.
     next_run_check: u64,
+    /// Per player of the team (by index in it): where the field took him last (m, global).
+    #[serde(default)]
+    fields: Vec<Option<Vec2>>,
+    /// Tick at which the fields are next worked out afresh.
+    #[serde(default)]
+    next_fields: u64,
+    /// Whether this decision works them out afresh.
+    #[serde(default)]
+    refresh: bool,
+    /// The carrier (global index) when they were last worked out.
+    #[serde(default)]
+    fields_owner: Option<usize>,
+    /// Every player of the match (by global index) as this decision sees him, in the team's frame
+    /// (filled by [`Support::update`]; scratch, no allocation: a team has at most
+    /// [`MAX_PLAYERS_PER_TEAM`] players).
+    #[serde(skip)]
+    seen: [Seen; 2 * MAX_PLAYERS_PER_TEAM],
+    /// Where the ball is predicted at [`BALL_PATH_TIMES`] (m, team frame; filled by
+    /// [`Support::update`]).
+    #[serde(skip)]
+    ball_path: [Vec2; 4],
+}
+
+/// A player as a support decision sees him (m, team frame).
+#[derive(Clone, Copy, Debug, Default)]
+struct Seen {
+    /// Where he is.
+    at: Vec2,
+    /// Where he will be 0.1 s on at his velocity (GRF's look ahead).
+    ahead: Vec2,
+    /// Whether he plays (not sent off).
+    active: bool,
 }
 
 impl Support {
-    /// The state of `side` at kickoff (GRF starts both teams' fading possession at 1).
-    pub(crate) fn new(side: Side) -> Support {
-        Support { side, fading: 1.0, updated: 0, forward: None, next_forward: 0, runner: None, next_run_check: 0 }
+    /// The state of `side`'s `players` at kickoff (GRF starts both teams' fading possession at 1).
+    pub(crate) fn new(side: Side, players: usize) -> Support {
+        Support {
+            side,
+            fading: 1.0,
+            updated: 0,
+            forward: None,
+            next_forward: 0,
+            runner: None,
+            next_run_check: 0,
+            fields: vec![None; players],
+            next_fields: 0,
+            refresh: true,
+            fields_owner: None,
+            seen: [Seen::default(); 2 * MAX_PLAYERS_PER_TEAM],
+            ball_path: [Vec2::ZERO; 4],
+        }
+    }
+
+    /// Checks a decoded state against a team of `players`: the kept fields finite and on the
+    /// pitch's scale, no more of them than players (for [`super::TeamAi::check`]).
+    pub(crate) fn check(&self, players: usize) -> Result<(), String> {
+        if self.fields.len() > players {
+            return Err(format!("{} support fields for a team of {players}", self.fields.len()));
+        }
+        let sane = |v: &Vec2| v.is_finite() && v.abs().max_element() <= 10_000.0;
+        if !self.fields.iter().flatten().all(sane) || !self.fading.is_finite() {
+            return Err("a support field or the fading possession is not finite".into());
+        }
+        Ok(())
     }
 
     /// Brings the state up to `view.tick` for the team whose analysis is `analysis`: the fading
@@ -56,6 +121,19 @@ impl Support {
     /// decision.
     pub(crate) fn update(&mut self, view: &MatchView, analysis: &Analysis) {
         let side = self.side;
+        self.refresh = view.tick >= self.next_fields || view.owner != self.fields_owner;
+        if self.refresh {
+            self.next_fields = view.tick.saturating_add(FIELD_TICKS);
+            self.fields_owner = view.owner;
+        }
+        let frame = analysis.frame;
+        for (seen, q) in self.seen.iter_mut().zip(view.players) {
+            *seen =
+                Seen { at: frame.vec2(q.position), ahead: frame.vec2(q.position + q.velocity * 0.1), active: q.active };
+        }
+        for (spot, t) in self.ball_path.iter_mut().zip(BALL_PATH_TIMES) {
+            *spot = frame.vec2(ball_at(analysis, t));
+        }
         let ours = view.owner_side() == Some(side);
         let ticks = view.tick.saturating_sub(self.updated);
         self.updated = view.tick;
@@ -93,24 +171,38 @@ impl Support {
         if self.runner.is_none() && view.tick >= self.next_run_check {
             self.next_run_check = view.tick.saturating_add(RUN_CHECK_TICKS);
             if ours {
-                self.runner =
-                    attacking_run(view, side, analysis, main).map(|r| (r, view.tick.saturating_add(RUN_TICKS)));
+                self.runner = attacking_run(view, &self.seen, side, analysis, main)
+                    .map(|r| (r, view.tick.saturating_add(RUN_TICKS)));
             }
         }
     }
 
-    /// Where player `g` of the team goes in open play, given his place in the shape `place` (m,
-    /// global): the place, or, as far as the team's fading possession has it attacking, a blend
-    /// with where the support field takes him. Players of a team without the ball keep `place`.
-    pub(crate) fn place(&self, view: &MatchView, g: usize, analysis: &Analysis, place: Vec2) -> Vec2 {
+    /// Where player `g` (the team's `i`-th) goes in open play, given his place in the shape
+    /// `place` (m, global): the place, or, as far as the team's fading possession has it
+    /// attacking, a blend with where the support field takes him. Players of a team without the
+    /// ball keep `place`.
+    pub(crate) fn place(&mut self, view: &MatchView, g: usize, i: usize, analysis: &Analysis, place: Vec2) -> Vec2 {
         let p = &view.players[g];
         let bias = attack_bias(p.role, self.fading);
         if bias <= 0.0 || p.is_keeper() || view.mode != GameMode::Normal {
             return place;
         }
         let Some(main) = main_man(view, self.side, analysis) else { return place };
-        let runs = self.runner.is_some_and(|(r, _)| r == g) && bias > run_threshold(p.role);
-        let field = self.field_position(view, g, main, analysis, place, runs);
+        if i >= self.fields.len() {
+            // A state saved before the fields were kept: size them once.
+            self.fields.resize(view.ranges[self.side.index()].len(), None);
+        }
+        let field = match self.fields.get(i).copied().flatten() {
+            Some(field) if !self.refresh => field,
+            _ => {
+                let runs = self.runner.is_some_and(|(r, _)| r == g) && bias > run_threshold(p.role);
+                let field = self.field_position(view, g, main, analysis, place, runs);
+                if let Some(slot) = self.fields.get_mut(i) {
+                    *slot = Some(field);
+                }
+                field
+            }
+        };
         place.lerp(field, bias)
     }
 
@@ -126,9 +218,8 @@ impl Support {
     ) -> Vec2 {
         let frame = analysis.frame;
         let p = &view.players[g];
-        let m = &view.players[main];
-        let at = frame.vec2(p.position + p.velocity * 0.1);
-        let main_at = frame.vec2(m.position + m.velocity * 0.1);
+        let at = self.seen[g].ahead;
+        let main_at = self.seen[main].ahead;
         let mind_set = p.role.mind_set();
         let mut field = Field::new(at);
 
@@ -140,7 +231,7 @@ impl Support {
         } else {
             let lane_y = -main_at.y.signum() * 8.0;
             let near_lane = 1.0 - ((lane_y - at.y).abs() / 30.0).min(1.0);
-            origin.x += libm::powf(mind_set, 1.5) * 22.0 * sine_ease(near_lane);
+            origin.x += mind_set * mind_set.sqrt() * 22.0 * sine_ease(near_lane);
         }
         let pull = 0.7 * (0.3 + 0.7 * (origin.distance(at) / 20.0).min(1.0));
         field.attract_constant(origin, pull);
@@ -153,21 +244,20 @@ impl Support {
         let probe = main_at * 0.3 + at + Vec2::splat(0.7);
         let (scale, power) = if runs { (2.0, 0.5) } else { (5.0, 1.0) };
         let opponent_power = 0.3 * opponent_repel(p.role) * power;
-        for o in nearest_k::<3>(view, p.side.opponent(), frame, probe, None) {
-            let o = &view.players[o];
-            let o_at = frame.vec2(o.position + o.velocity * 0.1);
+        let opponents = view.ranges[p.side.opponent().index()].clone();
+        for o in nearest_k::<3>(&self.seen, opponents, probe, None) {
+            let o_at = self.seen[o].ahead;
             let shadow = o_at + (o_at - main_at).normalize_or_zero() * 2.0;
             field.repel(shadow, opponent_power, scale, 0.7);
         }
         // Team-mates: spread out (the six nearest, himself left out).
-        for q in nearest_k::<6>(view, p.side, frame, at, Some(g)) {
-            let q = &view.players[q];
-            field.repel(frame.vec2(q.position + q.velocity * 0.1), 0.4, 10.5, 1.0);
+        for q in nearest_k::<6>(&self.seen, view.ranges[p.side.index()].clone(), at, Some(g)) {
+            field.repel(self.seen[q].ahead, 0.4, 10.5, 1.0);
         }
         if main != g {
             // Keep out of the ball's way over the next two thirds of a second.
-            for t in [0.2, 0.35, 0.5, 0.65] {
-                field.repel(frame.vec2(ball_at(analysis, t)), 1.0, 2.0, 0.5);
+            for spot in self.ball_path {
+                field.repel(spot, 1.0, 2.0, 0.5);
             }
             // Flock to the carrier, yet not too close.
             field.attract(main_at, 0.45, 21.0);
@@ -238,7 +328,7 @@ fn main_man(view: &MatchView, side: Side, analysis: &Analysis) -> Option<usize> 
 /// The attacking runner, if the conditions are right (GRF's): the team-mate nearest a point 26 m
 /// ahead of the carrier `main`, rated by his nearness to him (40 m at most) and by how few
 /// opponents are within 15 m of the space 10 m ahead of him.
-fn attacking_run(view: &MatchView, side: Side, analysis: &Analysis, main: usize) -> Option<usize> {
+fn attacking_run(view: &MatchView, seen: &[Seen], side: Side, analysis: &Analysis, main: usize) -> Option<usize> {
     let frame = analysis.frame;
     let m = &view.players[main];
     let focus = m.position + Vec2::new(side.attack_sign() * 26.0, 0.0);
@@ -247,8 +337,8 @@ fn attacking_run(view: &MatchView, side: Side, analysis: &Analysis, main: usize)
     let near = (1.0 - (r.position.distance(m.position) / 40.0).min(1.0)).sqrt();
     let space = frame.vec2(r.position) * Vec2::new(1.0, 0.8) + Vec2::new(10.0, 0.0);
     let mut free = 1.0;
-    for o in nearest_k::<4>(view, side.opponent(), frame, space, None) {
-        let d = frame.vec2(view.players[o].position).distance(space);
+    for o in nearest_k::<4>(seen, view.ranges[side.opponent().index()].clone(), space, None) {
+        let d = seen[o].at.distance(space);
         free -= sine_ease(1.0 - (d / 15.0).min(1.0)).sqrt() * 0.3;
     }
     (near * free >= RUN_RATING).then_some(runner)
@@ -266,27 +356,32 @@ fn nearest(view: &MatchView, side: Side, at: Vec2, except: Option<usize>) -> Opt
         })
 }
 
-/// The `K` active players of `side` nearest `at` (m, team frame `frame`), `except` left out, in no
-/// particular order; fewer when the team has fewer. No allocation.
+/// The `K` active players among `players` (global indices into `seen`) nearest `at` (m, team
+/// frame), `except` left out, nearest first; fewer when there are fewer. No allocation.
 fn nearest_k<const K: usize>(
-    view: &MatchView,
-    side: Side,
-    frame: TeamFrame,
+    seen: &[Seen],
+    players: std::ops::Range<usize>,
     at: Vec2,
     except: Option<usize>,
 ) -> impl Iterator<Item = usize> {
+    // Kept sorted, nearest first: a candidate nearer than the last slides in.
     let mut best = [(f32::INFINITY, usize::MAX); K];
-    for g in view.ranges[side.index()].clone() {
-        let q = &view.players[g];
+    let start = players.start;
+    for (i, q) in seen[players].iter().enumerate() {
+        let g = start + i;
         if Some(g) == except || !q.active {
             continue;
         }
-        let d = frame.vec2(q.position).distance_squared(at);
-        if let Some(worst) = (0..K).max_by(|&a, &b| best[a].0.total_cmp(&best[b].0))
-            && d < best[worst].0
-        {
-            best[worst] = (d, g);
+        let d = q.at.distance_squared(at);
+        if d >= best[K - 1].0 {
+            continue;
         }
+        let mut k = K - 1;
+        while k > 0 && best[k - 1].0 > d {
+            best[k] = best[k - 1];
+            k -= 1;
+        }
+        best[k] = (d, g);
     }
     best.into_iter().filter(|&(_, g)| g != usize::MAX).map(|(_, g)| g)
 }
@@ -320,35 +415,45 @@ impl Field {
     }
 
     fn attract_constant(&mut self, origin: Vec2, power: f32) {
-        self.add(origin, power, true);
+        let to = origin - self.at;
+        self.pull(to, to.length(), power);
     }
 
     fn attract(&mut self, origin: Vec2, power: f32, reach: f32) {
-        let near = (1.0 - self.at.distance(origin) / reach).clamp(0.0, 1.0);
-        self.add(origin, power * near, true);
-    }
-
-    fn repel(&mut self, origin: Vec2, power: f32, reach: f32, exp: f32) {
-        let near = (1.0 - self.at.distance(origin) / reach).clamp(0.0, 1.0);
-        let near = if exp == 1.0 { near } else { libm::powf(near, exp) };
-        self.add(origin, power * near, false);
-    }
-
-    fn add(&mut self, origin: Vec2, force: f32, attract: bool) {
-        if force <= 0.0 {
-            return;
-        }
         let to = origin - self.at;
         let d = to.length();
-        let mut dir = to.normalize_or_zero();
-        if attract {
-            if d < 7.0 {
-                dir *= d / 7.0;
-            }
-        } else {
-            dir = -dir;
+        if d < reach {
+            self.pull(to, d, power * (1.0 - d / reach));
         }
-        self.sum += dir * force;
+    }
+
+    /// A push away from `origin` within `reach`, `exp` 1, 0.7 or 0.5 (the square root, exact).
+    fn repel(&mut self, origin: Vec2, power: f32, reach: f32, exp: f32) {
+        let to = origin - self.at;
+        let d = to.length();
+        if d >= reach || d == 0.0 {
+            return;
+        }
+        let near = 1.0 - d / reach;
+        let near = if exp == 1.0 {
+            near
+        } else if exp == 0.5 {
+            near.sqrt()
+        } else {
+            libm::powf(near, exp)
+        };
+        let force = power * near;
+        self.sum -= to * (force / d);
+        self.weight += force;
+    }
+
+    /// A pull along `to` (length `d`), damped within 7 m so that the player does not overshoot.
+    fn pull(&mut self, to: Vec2, d: f32, force: f32) {
+        if force <= 0.0 || d == 0.0 {
+            return;
+        }
+        let damp = if d < 7.0 { d / 7.0 } else { 1.0 };
+        self.sum += to * (force * damp / d);
         self.weight += force;
     }
 

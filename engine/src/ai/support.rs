@@ -140,9 +140,8 @@ impl Support {
         let keeper_holds = view.owner.is_some_and(|o| view.players[o].is_keeper());
         if view.mode != GameMode::Normal || keeper_holds {
             // GRF's ball retainer or set piece: the team that has it is sure of it.
-            let has = match (view.mode, view.taker) {
-                (GameMode::Normal, _) => ours,
-                (_, Some(t)) => view.players[t].side == side,
+            let has = match view.taker {
+                Some(t) if view.mode != GameMode::Normal => view.players[t].side == side,
                 _ => ours,
             };
             self.fading = if has { 1.5 } else { 0.5 };

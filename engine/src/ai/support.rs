@@ -24,9 +24,10 @@ const RUN_CHECK_TICKS: u64 = 50;
 const RUN_TICKS: u64 = 400;
 /// A run is made when the runner's conditions rate at least this (GRF's 0.5).
 const RUN_RATING: f32 = 0.5;
-/// Ticks a player keeps the field's answer before it is worked out again (100 ms, GRF's
-/// reaction time; the field for every player at every decision was a third of a match's step),
-/// sooner when the ball changes hands (a carrier found or lost).
+/// Ticks after which the field's answers are worked out again, at the team's next decision (so
+/// every second decision for θ above 0.5, every decision below; the field for every player at
+/// every decision was a third of a match's step), and at once when the ball changes hands (a
+/// carrier found or lost).
 const FIELD_TICKS: u64 = 10;
 /// When the ball's path is kept out of (s ahead; GRF's).
 const BALL_PATH_TIMES: [f32; 4] = [0.2, 0.35, 0.5, 0.65];

@@ -486,6 +486,20 @@ mod tests {
     }
 
     #[test]
+    fn a_damaged_state_is_refused() {
+        let mut support = Support::new(Side::Left, 11);
+        assert_eq!(support.check(11), Ok(()));
+        support.fields[3] = Some(Vec2::new(f32::NAN, 0.0));
+        assert!(support.check(11).is_err_and(|e| e.contains("not finite")));
+        support.fields[3] = Some(Vec2::new(1e6, 0.0));
+        assert!(support.check(11).is_err());
+        support.fields[3] = None;
+        assert!(support.check(10).is_err_and(|e| e.contains("11 support fields")));
+        support.fading = f32::INFINITY;
+        assert!(support.check(11).is_err());
+    }
+
+    #[test]
     fn a_pull_and_an_equal_push_cancel() {
         let mut field = Field::new(Vec2::ZERO);
         field.attract_constant(Vec2::new(20.0, 0.0), 1.0);

@@ -123,28 +123,42 @@ pub fn assign(view: &MatchView, side: Side, marks: &mut [Option<usize>]) {
     }
 }
 
-/// How much a player of `role` gives his marking job over his place in the shape (GRF's
-/// defensive bias, `(1.9 − mind-set − fading possession)^0.7`, with the fading possession of a
-/// team that has been without the ball a while, 0.6): full for the back line and the holding
-/// midfielder, less the further forward he plays.
-fn marking_weight(role: Role) -> f32 {
-    // libm::powf((1.3 − role.mind_set()).clamp(0.0, 1.0), 0.7) for the five mind-sets, bit for bit
-    // (a test checks): a powf per marker and decision was a measurable share of the AI's time.
-    match role {
-        Role::GK | Role::CB | Role::LB | Role::RB | Role::DM => 1.0,
-        Role::CM | Role::LM | Role::RM => 0.855_387_6,
-        Role::AM => 0.658_042_4,
-        Role::CF => 0.430_511_6,
-    }
+/// How much a marker of `role` gives his marking job over the place the shape and the support
+/// field gave him, with his team's fading possession `fading` in [0.5, 1.5] (`ai/support.rs`):
+/// GRF 2.10's defensive bias of its defence, midfield and attack strategies,
+/// (k − mind-set − fading)^0.7 clamped to [0, 1], with k = 1.9 for the back line, 1.5 for the
+/// midfielders (the holding one included) and 1.3 for the centre forward. A team that has just
+/// lost the ball (fading near 1) marks loosely and tightens as its possession fades.
+fn marking_weight(role: Role, fading: f32) -> f32 {
+    let k = match role {
+        Role::GK | Role::CB | Role::LB | Role::RB => 1.9,
+        Role::CF => 1.3,
+        Role::DM | Role::CM | Role::LM | Role::RM | Role::AM => 1.5,
+    };
+    libm::powf((k - role.mind_set() - fading).clamp(0.0, 1.0), 0.7)
 }
 
-/// Where marker `p` stands (m, team frame) to mark `man` (of the opponents; `on_ball`: he has the
-/// ball), given his place in the shape `shape` (team frame): GRF's defensive component. A team of
-/// difficulty `theta` gives it 0.3 + 0.7θ of its weight (GRF's own scaling of its defenders' reach):
-/// GRF's θ weakens an easy side's marking through its players' stats and reactions, which
-/// touchline does not model, and an easy side that marked like a hard one held the θ = 1 side to
-/// +1.4 goals a match instead of GRF's +3.4.
-pub fn position(p: &Player, man: &Player, on_ball: bool, shape: Vec2, frame: TeamFrame, theta: f32) -> Vec2 {
+/// Where marker `p` stands (m, global) to mark `man` (of the opponents; `on_ball`: he has the
+/// ball), given the place `place` (m, global) his shape and the support field gave him and his
+/// team's fading possession `fading`: GRF's defensive component, laid over that place last, as
+/// GRF's strategies do. A team of difficulty `theta` gives it 0.3 + 0.7θ of its weight (GRF's own
+/// scaling of its defenders' reach): GRF's θ weakens an easy side's marking through its players'
+/// stats and reactions, which touchline does not model, and an easy side that marked like a hard
+/// one held the θ = 1 side to +1.4 goals a match instead of GRF's +3.4.
+pub fn position(
+    p: &Player,
+    man: &Player,
+    on_ball: bool,
+    place: Vec2,
+    frame: TeamFrame,
+    theta: f32,
+    fading: f32,
+) -> Vec2 {
+    let weight = marking_weight(p.role, fading) * difficulty_scale(theta);
+    if weight <= 0.0 {
+        return place;
+    }
+    let shape = frame.vec2(place);
     let own_goal = Vec2::new(-HALF_LENGTH, 0.0);
     let man_at = frame.vec2(man.position + man.velocity * 0.5);
     let threshold = if on_ball { CARRIER_SHOOTING_DISTANCE } else { SHOOTING_DISTANCE };
@@ -164,7 +178,7 @@ pub fn position(p: &Player, man: &Player, on_ball: bool, shape: Vec2, frame: Tea
     if late > 0.0 {
         spot += (own_goal - spot).normalize_or_zero() * late * 0.7;
     }
-    shape.lerp(spot, marking_weight(p.role) * difficulty_scale(theta))
+    frame.vec2(shape.lerp(spot, weight))
 }
 
 #[cfg(test)]
@@ -192,10 +206,17 @@ mod tests {
     }
 
     #[test]
-    fn the_marking_weights_are_powf_of_the_mind_set() {
+    fn the_back_line_marks_fully_and_a_team_that_just_lost_the_ball_loosely() {
+        // A team long without the ball (fading 0.5): GRF's defence marks fully, its midfield
+        // mostly and its centre forward not at all.
+        assert_eq!(marking_weight(Role::CB, 0.5), 1.0);
+        assert_eq!(marking_weight(Role::LB, 0.5), 1.0);
+        assert!((marking_weight(Role::CM, 0.5) - libm::powf(0.5, 0.7)).abs() < 1e-6);
+        assert_eq!(marking_weight(Role::CF, 0.5), 0.0);
+        // Just lost it (fading 1.2): everyone marks less, the back line included.
         for role in Role::ALL {
-            let powf = libm::powf((1.3 - role.mind_set()).clamp(0.0, 1.0), 0.7);
-            assert_eq!(marking_weight(role).to_bits(), powf.to_bits(), "{role:?}");
+            assert!(marking_weight(role, 1.2) <= marking_weight(role, 0.5), "{role:?}");
         }
+        assert!(marking_weight(Role::CB, 1.2) < 1.0);
     }
 }

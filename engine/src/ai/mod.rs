@@ -335,8 +335,15 @@ impl TeamAi {
             } else if let Some(plan) = pressing::plan(view, g, &analysis, difficulty, self.marks[i].is_some()) {
                 Plan { slide: sliding::should_slide(view, g), ..plan }
             } else {
-                let target = team_shape::position(view, g, &analysis, difficulty, self.marks[i]);
-                let target = support.place(view, g, i, &analysis, target);
+                let man = self.marks[i];
+                let shape = team_shape::position(view, g, &analysis, difficulty, man.is_some());
+                let mut target = support.place(view, g, i, &analysis, shape);
+                if let Some(m) = man {
+                    // GRF's order: the shape, then the support field, then the man to mark.
+                    let on_ball = view.owner == Some(m);
+                    let (frame, theta, fading) = (analysis.frame, difficulty.theta, support.fading());
+                    target = marking::position(p, &view.players[m], on_ball, target, frame, theta, fading);
+                }
                 // Anyone the carrier runs past may slide in (GRF's sliding command is every
                 // AI player's, not the hunter's alone).
                 let slide = sliding::should_slide(view, g);

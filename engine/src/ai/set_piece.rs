@@ -30,7 +30,7 @@ pub(crate) fn plan(
     if me.is_keeper() {
         return goalkeeper::plan(view, g, analysis, difficulty);
     }
-    let mut target = team_shape::position(view, g, analysis, difficulty, None);
+    let mut target = team_shape::position(view, g, analysis, difficulty, false);
     let ours = view.taker.is_some_and(|t| view.players[t].side == me.side);
     if ours && view.mode == GameMode::Corner && (me.role.is_attacker() || me.role == crate::player::Role::CB) {
         // Attack the cross: spread across the six-yard box and the penalty spot.

@@ -29,6 +29,10 @@ const RUN_RATING: f32 = 0.5;
 /// every decision was a third of a match's step), and at once when the ball changes hands (a
 /// carrier found or lost).
 const FIELD_TICKS: u64 = 10;
+/// The fading possession from which team-mates spread from each other (GRF's 1.02).
+const SPREAD_FADING: f32 = 1.02;
+/// The fading possession from which players keep out of the ball's path (GRF's 1.06).
+const CLEAR_PATH_FADING: f32 = 1.06;
 /// When the ball's path is kept out of (s ahead; GRF's).
 const BALL_PATH_TIMES: [f32; 4] = [0.2, 0.35, 0.5, 0.65];
 
@@ -102,6 +106,11 @@ impl Support {
             seen: [Seen::default(); 2 * MAX_PLAYERS_PER_TEAM],
             ball_path: [Vec2::ZERO; 4],
         }
+    }
+
+    /// The team's fading possession, in [0.5, 1.5] (see the field's doc).
+    pub(crate) fn fading(&self) -> f32 {
+        self.fading
     }
 
     /// Checks a decoded state against a team of `players`: the kept fields finite and on the
@@ -250,15 +259,21 @@ impl Support {
             let shadow = o_at + (o_at - main_at).normalize_or_zero() * 2.0;
             field.repel(shadow, opponent_power, scale, 0.7);
         }
-        // Team-mates: spread out (the six nearest, himself left out).
-        for q in nearest_k::<6>(&self.seen, view.ranges[p.side.index()].clone(), at, Some(g)) {
-            field.repel(self.seen[q].ahead, 0.4, 10.5, 1.0);
+        // Team-mates: spread out (the six nearest, himself left out), once the team is sure
+        // enough of the ball (GRF: a fading possession of 1.02).
+        if self.fading >= SPREAD_FADING {
+            for q in nearest_k::<6>(&self.seen, view.ranges[p.side.index()].clone(), at, Some(g)) {
+                field.repel(self.seen[q].ahead, 0.4, 10.5, 1.0);
+            }
         }
-        if main != g {
-            // Keep out of the ball's way over the next two thirds of a second.
+        if main != g && self.fading >= CLEAR_PATH_FADING {
+            // Keep out of the ball's way over the next two thirds of a second (GRF: from a fading
+            // possession of 1.06).
             for spot in self.ball_path {
                 field.repel(spot, 1.0, 2.0, 0.5);
             }
+        }
+        if main != g {
             // Flock to the carrier, yet not too close.
             field.attract(main_at, 0.45, 21.0);
             field.repel(main_at, 0.45, 12.0, 1.0);

@@ -6,7 +6,7 @@
 
 use glam::Vec2;
 
-use super::{Analysis, Difficulty, MatchView, marking};
+use super::{Analysis, Difficulty, MatchView};
 use crate::geometry::TeamFrame;
 use crate::geometry::pitch::{CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 use crate::player::Role;
@@ -86,10 +86,10 @@ pub fn onside_margin(theta: f32) -> f32 {
 
 /// Where player `g` should stand now (m, global frame): his formation slot (`home`) in the block
 /// (`block_x`, `block_y`) drawn towards the ball (`micro_focus`). Players in possession
-/// stay onside; defending players mark an
-/// opponent in their zone, goal-side of him, more tightly at higher θ; a player the team's man
-/// marking gave a man (`man`, global index) marks him instead ([`marking::position`]).
-pub fn position(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, man: Option<usize>) -> Vec2 {
+/// stay onside; defending players mark an opponent in their zone, goal-side of him, more
+/// tightly at higher θ, unless the team's man marking gave them a man (`marks_a_man`): that
+/// marking is laid over the place after the support field ([`marking::position`]).
+pub fn position(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, marks_a_man: bool) -> Vec2 {
     let frame = analysis.frame;
     let p = &view.players[g];
     let ball = frame.vec2(view.ball.xy());
@@ -116,11 +116,8 @@ pub fn position(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Di
     x = x.clamp(-HALF_LENGTH + 4.0, HALF_LENGTH - 10.0);
     y = y.clamp(-HALF_WIDTH + 2.0, HALF_WIDTH - 2.0);
     let mut target = Vec2::new(x, y);
-    if !ours && view.mode == crate::game::GameMode::Normal && !p.is_keeper() {
-        target = match man {
-            Some(m) => marking::position(p, &view.players[m], view.owner == Some(m), target, frame, difficulty.theta),
-            None => mark(view, target, p.side.opponent(), frame, difficulty.theta),
-        };
+    if !ours && view.mode == crate::game::GameMode::Normal && !p.is_keeper() && !marks_a_man {
+        target = mark(view, target, p.side.opponent(), frame, difficulty.theta);
     }
     // At an opponents' set piece keep the distance the laws ask for.
     if view.mode != crate::game::GameMode::Normal && !ours {

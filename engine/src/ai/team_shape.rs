@@ -88,7 +88,7 @@ pub fn onside_margin(theta: f32) -> f32 {
 /// (`block_x`, `block_y`) drawn towards the ball (`micro_focus`). Players in possession
 /// stay onside; defending players mark an opponent in their zone, goal-side of him, more
 /// tightly at higher θ, unless the team's man marking gave them a man (`marks_a_man`): that
-/// marking is laid over the place after the support field ([`marking::position`]).
+/// marking is laid over the place after the support field ([`super::marking::position`]).
 pub fn position(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Difficulty, marks_a_man: bool) -> Vec2 {
     let frame = analysis.frame;
     let p = &view.players[g];

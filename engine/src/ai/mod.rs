@@ -8,6 +8,7 @@
 
 pub mod ball_carrier;
 mod clearance;
+mod force_field;
 pub mod difficulty;
 pub mod goalkeeper;
 pub mod marking;

@@ -10,11 +10,12 @@
 
 use glam::Vec2;
 
+use super::force_field::ForceField;
 use super::{Analysis, MatchView};
 use crate::game::GameMode;
 use crate::geometry::Side;
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
-use crate::player::{MAX_PLAYERS_PER_TEAM, Role, SPRINT_SPEED};
+use crate::player::{MAX_PLAYERS_PER_TEAM, Role};
 
 /// Ticks between two choices of the forward support player (GRF: 1.5 s).
 const FORWARD_SUPPORT_TICKS: u64 = 150;
@@ -29,6 +30,8 @@ const RUN_RATING: f32 = 0.5;
 /// every decision was a third of a match's step), and at once when the ball changes hands (a
 /// carrier found or lost).
 const FIELD_TICKS: u64 = 10;
+/// Pulls of the support field are damped within this distance (m), GRF's support field's.
+const SUPPORT_DAMPING: f32 = 7.0;
 /// The fading possession from which team-mates spread from each other (GRF's 1.02).
 const SPREAD_FADING: f32 = 1.02;
 /// The fading possession from which players keep out of the ball's path (GRF's 1.06).
@@ -230,7 +233,7 @@ impl Support {
         let at = self.seen[g].ahead;
         let main_at = self.seen[main].ahead;
         let mind_set = p.role.mind_set();
-        let mut field = Field::new(at);
+        let mut field = ForceField::new(at, SUPPORT_DAMPING);
 
         // His place, pushed up the pitch: by 4-12 m for the forward support player; for the
         // others by up to 22 m in the lane 8 m off the middle on the side away from the carrier.
@@ -415,69 +418,6 @@ fn sine_ease(x: f32) -> f32 {
     super::team_shape::curve(x, 1.0)
 }
 
-/// A force field being summed (GRF's force-field movement): each spot pulls or pushes along the
-/// unit vector to it, weighted by its power and, for a spot with a reach, by (1 − d/reach)^exp;
-/// pulls from within 7 m are damped by d/7 so the player does not overshoot.
-struct Field {
-    at: Vec2,
-    sum: Vec2,
-    weight: f32,
-}
-
-impl Field {
-    fn new(at: Vec2) -> Field {
-        Field { at, sum: Vec2::ZERO, weight: 0.0 }
-    }
-
-    fn attract_constant(&mut self, origin: Vec2, power: f32) {
-        let to = origin - self.at;
-        self.pull(to, to.length(), power);
-    }
-
-    fn attract(&mut self, origin: Vec2, power: f32, reach: f32) {
-        let to = origin - self.at;
-        let d = to.length();
-        if d < reach {
-            self.pull(to, d, power * (1.0 - d / reach));
-        }
-    }
-
-    /// A push away from `origin` within `reach`, `exp` 1, 0.7 or 0.5 (the square root, exact).
-    fn repel(&mut self, origin: Vec2, power: f32, reach: f32, exp: f32) {
-        let to = origin - self.at;
-        let d = to.length();
-        if d >= reach || d == 0.0 {
-            return;
-        }
-        let near = 1.0 - d / reach;
-        let near = if exp == 1.0 {
-            near
-        } else if exp == 0.5 {
-            near.sqrt()
-        } else {
-            libm::powf(near, exp)
-        };
-        let force = power * near;
-        self.sum -= to * (force / d);
-        self.weight += force;
-    }
-
-    /// A pull along `to` (length `d`), damped within 7 m so that the player does not overshoot.
-    fn pull(&mut self, to: Vec2, d: f32, force: f32) {
-        if force <= 0.0 || d == 0.0 {
-            return;
-        }
-        let damp = if d < 7.0 { d / 7.0 } else { 1.0 };
-        self.sum += to * (force * damp / d);
-        self.weight += force;
-    }
-
-    /// The movement the field asks for: the weighted mean direction at a sprint's length (m).
-    fn movement(&self) -> Vec2 {
-        if self.weight == 0.0 { Vec2::ZERO } else { self.sum / self.weight * SPRINT_SPEED }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -512,17 +452,5 @@ mod tests {
         assert!(support.check(10).is_err_and(|e| e.contains("11 support fields")));
         support.fading = f32::INFINITY;
         assert!(support.check(11).is_err());
-    }
-
-    #[test]
-    fn a_pull_and_an_equal_push_cancel() {
-        let mut field = Field::new(Vec2::ZERO);
-        field.attract_constant(Vec2::new(20.0, 0.0), 1.0);
-        field.repel(Vec2::new(-1.0, 0.0), 1.0, 1e9, 1.0);
-        assert!(field.movement().x > 0.0);
-        let mut field = Field::new(Vec2::ZERO);
-        field.attract_constant(Vec2::new(20.0, 0.0), 1.0);
-        field.repel(Vec2::new(1.0, 0.0), 1.0, 1e9, 1.0);
-        assert!(field.movement().length() < 1e-3, "{}", field.movement());
     }
 }

@@ -8,8 +8,8 @@
 
 pub mod ball_carrier;
 mod clearance;
-mod force_field;
 pub mod difficulty;
+mod force_field;
 pub mod goalkeeper;
 pub mod marking;
 mod pass_choice;

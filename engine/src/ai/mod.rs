@@ -59,6 +59,8 @@ pub struct MatchView<'a> {
     pub offsides: bool,
     /// Per player (global index): driven by an agent, so the AI cannot send him anywhere.
     pub agent_driven: &'a [bool],
+    /// The free ball's predicted path, shared by everyone who asks in this tick.
+    pub paths: &'a prediction::BallPathMemo,
 }
 
 impl MatchView<'_> {

@@ -1,5 +1,7 @@
 //! Where the ball is going and who gets there first.
 
+use std::cell::RefCell;
+
 use glam::{Vec2, Vec3, Vec4};
 
 use super::{Analysis, Difficulty, MatchView};
@@ -142,6 +144,40 @@ impl BallPath {
     }
 }
 
+/// The last free-ball prediction and the ball state it was made from. In a tick, both teams'
+/// analyses, the magnet and the controllers' time to the ball all ask for the path of the same
+/// ball (only a kick moves it between them), and [`BallPath::predict`] is a function of the
+/// ball's position and velocity alone, so they share one prediction and play is unchanged bit for
+/// bit. The prediction was the largest single cost of an Academy drill's step.
+///
+/// Not part of a snapshot: a copy or a restored match starts empty and predicts again.
+#[derive(Debug, Default)]
+pub struct BallPathMemo(RefCell<Option<([u32; 6], BallPath)>>);
+
+impl BallPathMemo {
+    /// [`BallPath::predict`] for `ball`, made again only when its position or velocity changed
+    /// (compared bit for bit).
+    pub fn path(&self, ball: &Ball) -> BallPath {
+        let (p, v) = (ball.position, ball.velocity);
+        let key = [p.x, p.y, p.z, v.x, v.y, v.z].map(f32::to_bits);
+        let mut memo = self.0.borrow_mut();
+        match &*memo {
+            Some((k, path)) if *k == key => *path,
+            _ => {
+                let path = BallPath::predict(ball);
+                *memo = Some((key, path));
+                path
+            }
+        }
+    }
+}
+
+impl Clone for BallPathMemo {
+    fn clone(&self) -> Self {
+        BallPathMemo::default()
+    }
+}
+
 /// Shared analysis for `side`'s decision.
 pub fn analyse(view: &MatchView, side: Side, _difficulty: &Difficulty) -> Analysis {
     let path = match view.owner {
@@ -155,7 +191,7 @@ pub fn analyse(view: &MatchView, side: Side, _difficulty: &Difficulty) -> Analys
             }
             BallPath::new(at)
         }
-        None => BallPath::predict(view.ball),
+        None => view.paths.path(view.ball),
     };
     let mut best: Option<(usize, f32, Vec2)> = None;
     let mut second: Option<(usize, f32)> = None;

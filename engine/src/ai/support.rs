@@ -36,6 +36,18 @@ const SUPPORT_DAMPING: f32 = 7.0;
 const SPREAD_FADING: f32 = 1.02;
 /// The fading possession from which players keep out of the ball's path (GRF's 1.06).
 const CLEAR_PATH_FADING: f32 = 1.06;
+/// Share of the fading possession's distance to its target left after `ticks` ticks, 0.995 to
+/// that power: from a table for the few ticks between two decisions (a power per team decision was
+/// a fiftieth of an Academy drill's step), the same value as `libm::powf` gives.
+fn fading_keep(ticks: u64) -> f32 {
+    const TABLED: usize = 32;
+    static KEEP: std::sync::OnceLock<[f32; TABLED]> = std::sync::OnceLock::new();
+    match usize::try_from(ticks) {
+        Ok(t) if t < TABLED => KEEP.get_or_init(|| std::array::from_fn(|t| libm::powf(0.995, t as f32)))[t],
+        _ => libm::powf(0.995, ticks as f32),
+    }
+}
+
 /// When the ball's path is kept out of (s ahead; GRF's).
 const BALL_PATH_TIMES: [f32; 4] = [0.2, 0.35, 0.5, 0.65];
 
@@ -163,7 +175,7 @@ impl Support {
             let their_time = if view.owner.is_some() && !ours { 0.0 } else { analysis.opponent_time };
             let target = possession_ratio(own_time, their_time);
             // GRF moves it 0.5 % of the way each 10 ms tick.
-            let keep = libm::powf(0.995, ticks as f32);
+            let keep = fading_keep(ticks);
             self.fading = target + (self.fading - target) * keep;
         }
         let Some(main) = main_man(view, side, analysis) else {

@@ -35,7 +35,7 @@ fn time_to_ball(game: &Match, path: &LazyPath, p: &crate::player::Player) -> f32
     if game.owner().is_some() || ball.velocity.length_squared() < SLOW_BALL * SLOW_BALL {
         return p.position.distance(ball.xy()) / speed;
     }
-    path.get_or_init(|| BallPath::predict(game.ball())).intercept(p.position, speed, REACH_HEIGHT).0
+    path.get_or_init(|| game.paths.path(game.ball())).intercept(p.position, speed, REACH_HEIGHT).0
 }
 
 /// The player of `side` the team would hand control to: the ball owner if he is on this team,

@@ -9,7 +9,6 @@ use serde::{Deserialize, Serialize};
 use super::kick::{ease, signed_angle};
 use super::tick::{BALL_CONTROL_RANGE, DISTANCE_TO_VELOCITY};
 use super::{GameMode, Match};
-use crate::ai::BallPath;
 
 /// Highest point (m) of the ball's path the magnet runs an agent's player to: GRF's to-ball
 /// movement skips predicted positions 1 m up or higher.
@@ -74,7 +73,7 @@ impl Match {
         if self.owner.is_some() || self.mode != GameMode::Normal || !self.agent_driven.iter().any(|&a| a) {
             return [None; 2];
         }
-        let path = BallPath::predict(&self.ball);
+        let path = self.paths.path(&self.ball);
         let mut best: [Option<(f32, usize, Vec2)>; 2] = [None; 2];
         for (g, p) in self.players.iter().enumerate() {
             if !p.active {

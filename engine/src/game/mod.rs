@@ -86,6 +86,9 @@ pub struct Match {
     /// was worked out at. It is worked out again every `magnet::MAGNET_EVERY` ticks and after
     /// every touch of the ball.
     pub(crate) magnet: [Option<magnet::Pull>; 2],
+    /// The free ball's last predicted path (see `BallPathMemo`): a cache, not part of a snapshot.
+    #[serde(skip)]
+    pub(crate) paths: crate::ai::prediction::BallPathMemo,
     pub(crate) magnet_tick: u64,
     /// Player who last had the ball at his feet (cleared at kickoffs): a trap by an opponent of
     /// his is a [`Event::PossessionWon`].
@@ -202,6 +205,7 @@ impl Match {
             touch_tick: 0,
             magnet: [None; 2],
             magnet_tick: 0,
+            paths: Default::default(),
             possessor: None,
             score: [0, 0],
             mode: GameMode::Normal,

@@ -7,7 +7,7 @@ use crate::geometry::Side;
 use super::kick::{launch, pass_choice};
 use super::{GOAL_DEAD_TICKS, GameMode, KickKind, Match, OUT_DEAD_TICKS, Phase};
 use crate::game::input::Kick;
-use crate::physics::{MotionLimits, TICK_SECONDS, move_player, separate_players};
+use crate::physics::{MotionLimits, Stride, Strides, TICK_SECONDS, separate_players};
 use crate::player::DRIBBLE_SPEED;
 use crate::rules::{self, Restart, Stoppage};
 use crate::stats::Event;
@@ -131,6 +131,7 @@ impl Match {
             owner_ticks: self.owner_ticks,
             offsides: self.offsides,
             agent_driven: &self.agent_driven,
+            paths: &self.paths,
         };
         for side in 0..2 {
             if behaviours && self.nobody_for_ai(side) {
@@ -367,6 +368,7 @@ impl Match {
             p.controlling_ball = step.is_some();
         }
         let fatigue_tick = self.in_play_ticks.is_multiple_of(FATIGUE_EVERY);
+        let mut strides = Strides::new(TICK_SECONDS);
         for g in 0..self.players.len() {
             let theta = self.theta(g);
             let p = &mut self.players[g];
@@ -415,8 +417,9 @@ impl Match {
                     velocity *= cap / speed2.sqrt();
                 }
             }
-            move_player(p, velocity, look, limits, TICK_SECONDS);
+            strides.push(&mut self.players, g, Stride { velocity, look, limits });
         }
+        strides.finish(&mut self.players);
     }
 
     /// The velocity `g` asks for this tick: his input's, or for an agent's player the step of his

@@ -4,12 +4,14 @@
 mod ball;
 mod colliders;
 mod player_motion;
+mod strides;
 
 pub use ball::{
     BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_QUADRATIC, ROLL_QUADRATIC_TOTAL, rolled_speed,
 };
 pub use colliders::{PitchColliders, Surface};
-pub(crate) use player_motion::{MotionLimits, keep_inside_rim, move_player, separate_players};
+pub(crate) use player_motion::{MotionLimits, keep_inside_rim, separate_players};
+pub(crate) use strides::{Stride, Strides};
 
 /// Length of one tick (s): 10 ms, GRF's physics step (docs/grf-compatibility.md#time-base).
 pub const TICK_SECONDS: f32 = 0.01;

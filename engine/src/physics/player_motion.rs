@@ -26,8 +26,8 @@ impl Default for MotionLimits {
 
 // Facing turns at most 0.12 rad per tick (12 rad/s); cos and sin precomputed so that no
 // transcendental function runs per tick.
-const TURN_COS: f32 = 0.992_808_6;
-const TURN_SIN: f32 = 0.119_712_2;
+pub(super) const TURN_COS: f32 = 0.992_808_6;
+pub(super) const TURN_SIN: f32 = 0.119_712_2;
 
 /// Moves `player` one tick of `dt` seconds at the velocity he asks for (m/s), turning to `look`
 /// when he stands (a [`crate::game::PlayerInput`]'s velocity and look, after the match's caps).

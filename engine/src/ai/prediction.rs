@@ -1,6 +1,6 @@
 //! Where the ball is going and who gets there first.
 
-use std::cell::RefCell;
+use std::sync::{Mutex, PoisonError};
 
 use glam::{Vec2, Vec3, Vec4};
 
@@ -150,9 +150,10 @@ impl BallPath {
 /// ball's position and velocity alone, so they share one prediction and play is unchanged bit for
 /// bit. The prediction was the largest single cost of an Academy drill's step.
 ///
-/// Not part of a snapshot: a copy or a restored match starts empty and predicts again.
+/// Not part of a snapshot: a copy or a restored match starts empty and predicts again. Behind a
+/// mutex (never contended: a match runs on one thread) so that a match stays `Sync`.
 #[derive(Debug, Default)]
-pub struct BallPathMemo(RefCell<Option<([u32; 6], BallPath)>>);
+pub struct BallPathMemo(Mutex<Option<([u32; 6], BallPath)>>);
 
 impl BallPathMemo {
     /// [`BallPath::predict`] for `ball`, made again only when its position or velocity changed
@@ -160,7 +161,7 @@ impl BallPathMemo {
     pub fn path(&self, ball: &Ball) -> BallPath {
         let (p, v) = (ball.position, ball.velocity);
         let key = [p.x, p.y, p.z, v.x, v.y, v.z].map(f32::to_bits);
-        let mut memo = self.0.borrow_mut();
+        let mut memo = self.0.lock().unwrap_or_else(PoisonError::into_inner);
         match &*memo {
             Some((k, path)) if *k == key => *path,
             _ => {

@@ -86,10 +86,10 @@ pub struct Match {
     /// was worked out at. It is worked out again every `magnet::MAGNET_EVERY` ticks and after
     /// every touch of the ball.
     pub(crate) magnet: [Option<magnet::Pull>; 2],
+    pub(crate) magnet_tick: u64,
     /// The free ball's last predicted path (see `BallPathMemo`): a cache, not part of a snapshot.
     #[serde(skip)]
     pub(crate) paths: crate::ai::prediction::BallPathMemo,
-    pub(crate) magnet_tick: u64,
     /// Player who last had the ball at his feet (cleared at kickoffs): a trap by an opponent of
     /// his is a [`Event::PossessionWon`].
     pub(crate) possessor: Option<usize>,

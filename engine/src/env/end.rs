@@ -28,7 +28,7 @@ impl EndTracker {
     /// global frame), `steps` being the number of steps taken this episode.
     /// `saved`: [`EndTracker::save`] found a save in this step.
     pub(crate) fn terminated(&mut self, scenario: &Scenario, game: &Match, steps: u32, saved: bool) -> bool {
-        let (score, mode, owner) = (game.score(), game.mode(), game.owner().map(|o| o.0));
+        let (score, mode, owner) = (game.score(), game.mode(), game.observed_owner().map(|o| o.0));
         let ball = world_to_obs(game.ball().xy());
         let taken = self.last_mode != GameMode::Normal && mode == GameMode::Normal;
         self.last_mode = mode;

@@ -338,7 +338,7 @@ impl Env {
         }
         self.state.rewards.fill(0.0);
         self.refresh_observations();
-        self.state.end.reset(self.state.game.owner().map(|o| o.0), self.state.game.mode());
+        self.state.end.reset(self.state.game.observed_owner().map(|o| o.0), self.state.game.mode());
         self.state.info = StepInfo {
             score: [0, 0],
             steps_left: self.steps_left(),

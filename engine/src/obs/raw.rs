@@ -86,7 +86,7 @@ impl RawObservation {
         self.ball = [b.x / OBS_X_SCALE, b.y / OBS_Y_SCALE, b.z];
         self.ball_direction = [bv.x / 10.0 / OBS_X_SCALE, bv.y / 10.0 / OBS_Y_SCALE, bv.z / 10.0];
         self.ball_rotation = (ball.spin * 1e-4).to_array();
-        match game.owner() {
+        match game.observed_owner() {
             Some((side, i)) => {
                 self.ball_owned_team = if side == viewer { 0 } else { 1 };
                 self.ball_owned_player = i as i32;

@@ -49,8 +49,9 @@ pub enum Phase {
 pub(crate) const GOAL_DEAD_TICKS: u16 = 60;
 /// Ticks of dead time after the ball leaves the pitch before the set piece is ready.
 pub(crate) const OUT_DEAD_TICKS: u16 = 100;
-/// GRF's possession test behind [`Match::observed_owner`] (grf-mechanisms.md §4): highest ball
-/// (m, centre), reach (m) and the most the ball's velocity may differ from the player's (m/s).
+/// GRF's possession test behind [`Match::observed_owner`]
+/// (docs/grf-compatibility.md#raw-observation): the highest ball (m, its centre), the reach (m)
+/// and the most the ball's velocity may differ from the player's (m/s).
 const OBSERVED_POSSESSION_HEIGHT: f32 = 0.5;
 const OBSERVED_POSSESSION_REACH: f32 = 1.0;
 const OBSERVED_POSSESSION_SPEED: f32 = 6.0;
@@ -363,13 +364,13 @@ impl Match {
     }
 
     /// The player the observation shows with the ball, as (side, index in team): the player with
-    /// it at his feet, or else the last to touch it while he still has possession by GRF's test
-    /// (the ball at most 0.5 m up, within 1 m of the point 0.05 s of his run and 0.1 m along his
-    /// facing ahead of him, moving within 6 m/s of him, and it is not his pass on its way: GRF's passer in his kick's
-    /// animation has no possession; a shot or clearance leaves him faster than 6 m/s).
-    /// GRF 2.10 reports its last toucher this way (`ball_owned_team`, grf-mechanisms.md §4), so
-    /// a standing tackle's knock shows as the tackler's ball until it has run a metre from him,
-    /// and the episode's possession-change end reads it the same way.
+    /// it at his feet, or else the last to touch it while he still has possession by GRF's test:
+    /// the ball at most 0.5 m up, within 1 m of the point 0.05 s of his run and 0.1 m along his
+    /// facing ahead of him, moving within 6 m/s of him, and not his pass on its way (GRF's passer
+    /// has no possession during his kick's animation; a shot or clearance leaves him faster than
+    /// 6 m/s). GRF 2.10 reports its `ball_owned_team` this way
+    /// (docs/grf-compatibility.md#raw-observation), so a standing tackle's knock shows as the
+    /// tackler's ball until it has run a metre from him; the possession-change end reads it too.
     pub fn observed_owner(&self) -> Option<(Side, usize)> {
         if self.owner.is_some() {
             return self.owner();

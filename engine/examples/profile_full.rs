@@ -3,6 +3,8 @@
 //! argument, a random agent on the controlled player as the step bench's Academy case does: a
 //! fixed workload for profilers and instruction counts (`perf stat`, `perf record`, `valgrind
 //! --tool=callgrind`), which a loaded machine does not disturb as it does wall-clock benchmarks.
+//! Prints the match state hash chained every 100 steps: an optimisation that must leave play bit
+//! for bit as it was shows the same hash before and after.
 //!
 //! `cargo run --release -p touchline-engine --example profile_full -- academy_empty_goal_close random`
 use touchline_engine::{Action, ActionSet, Env, EnvConfig, Scenario};
@@ -15,7 +17,8 @@ fn main() {
     let config = EnvConfig { action_set: set, ..EnvConfig::default() };
     let mut env = Env::with_config(s, config, 0).expect("env");
     let mut state: u64 = 0x2545_F491_4F6C_DD1D;
-    for _ in 0..20000 {
+    let mut hash: u64 = 0;
+    for step in 0..20000 {
         let action = if random {
             state ^= state << 13;
             state ^= state >> 7;
@@ -26,8 +29,12 @@ fn main() {
         };
         let out = env.step(&[action]).expect("step");
         std::hint::black_box(env.observations());
+        if step % 100 == 99 {
+            hash = hash.rotate_left(7) ^ env.game().state_hash();
+        }
         if out.terminated || out.truncated {
             env.reset().expect("reset");
         }
     }
+    println!("trajectory hash {hash:#018x}");
 }

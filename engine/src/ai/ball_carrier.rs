@@ -5,7 +5,7 @@
 
 use glam::Vec2;
 
-use super::pass_choice::{self, passing_odds};
+use super::pass_choice::{self, Rivals, passing_odds};
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::game::{Kick, KickKind, KickTarget};
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
@@ -40,8 +40,8 @@ fn takes_on_shot(
         return None;
     }
     let origin = from + velocity * 0.12;
-    let lane_odds =
-        |y: f32| passing_odds(origin, Vec2::new(HALF_LENGTH + 1.0, y), KickKind::Shot, opponents, frame, 3.0);
+    let rivals = Rivals::of(opponents, frame);
+    let lane_odds = |y: f32| passing_odds(origin, Vec2::new(HALF_LENGTH + 1.0, y), KickKind::Shot, &rivals, 3.0);
     let (mut odds, mut lane) = (lane_odds(0.0), 0.0);
     for y in [-SHOT_LANE, SHOT_LANE] {
         let o = lane_odds(y);

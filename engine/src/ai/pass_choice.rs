@@ -10,18 +10,52 @@ use glam::Vec2;
 use crate::game::KickKind;
 use crate::geometry::TeamFrame;
 use crate::geometry::pitch::HALF_LENGTH;
-use crate::player::{Player, SPRINT_SPEED};
+use crate::player::{MAX_PLAYERS_PER_TEAM, Player, SPRINT_SPEED};
+
+/// The opponents as the carrier's ratings and odds see them: each active one where his run takes
+/// him in 0.2 s (team frame, m), and whether he plays outfield. Worked out once per decision: a
+/// carrier's choice rates his space and each team-mate's and the odds of three passes to each,
+/// and every one of those looked at every opponent (a team has at most
+/// [`MAX_PLAYERS_PER_TEAM`]).
+pub(crate) struct Rivals {
+    at: [Vec2; MAX_PLAYERS_PER_TEAM],
+    outfield: [bool; MAX_PLAYERS_PER_TEAM],
+    len: usize,
+}
+
+impl Rivals {
+    /// The active ones of `opponents`, seen in `frame`.
+    pub(crate) fn of(opponents: &[Player], frame: TeamFrame) -> Rivals {
+        let mut rivals =
+            Rivals { at: [Vec2::ZERO; MAX_PLAYERS_PER_TEAM], outfield: [false; MAX_PLAYERS_PER_TEAM], len: 0 };
+        for o in opponents.iter().filter(|o| o.active).take(MAX_PLAYERS_PER_TEAM) {
+            rivals.at[rivals.len] = frame.vec2(o.position + o.velocity * 0.2);
+            rivals.outfield[rivals.len] = !o.is_keeper();
+            rivals.len += 1;
+        }
+        rivals
+    }
+
+    /// Where each one will be, in `opponents`' order.
+    fn at(&self) -> &[Vec2] {
+        &self.at[..self.len]
+    }
+
+    /// Where each outfield one will be, in `opponents`' order.
+    fn outfield_at(&self) -> impl Iterator<Item = Vec2> + '_ {
+        self.at().iter().zip(&self.outfield).filter(|(_, outfield)| **outfield).map(|(&at, _)| at)
+    }
+}
 
 /// How free of opponents the point `focus` (team frame, m) will be in `time` s, in [0, 1]: each
 /// outfield opponent, from where his run takes him in 0.2 s, sprints towards it for the rest of
 /// the time; within 5 m of it he counts 1 − distance/5 m, and 2.5 such counts leave no space
 /// (GRF's free space).
-fn free_space(focus: Vec2, time: f32, opponents: &[Player], frame: TeamFrame) -> f32 {
+fn free_space(focus: Vec2, time: f32, rivals: &Rivals) -> f32 {
     const SAFE: f32 = 5.0;
     let reach = SPRINT_SPEED * (time - 0.2).max(0.0);
     let mut crowd = 0.0;
-    for o in opponents.iter().filter(|o| o.active && !o.is_keeper()) {
-        let at = frame.vec2(o.position + o.velocity * 0.2);
+    for at in rivals.outfield_at() {
         let gap = (focus - at).length();
         let left = (gap - reach).max(0.0);
         crowd += 1.0 - left.min(SAFE) / SAFE;
@@ -33,10 +67,10 @@ fn free_space(focus: Vec2, time: f32, opponents: &[Player], frame: TeamFrame) ->
 /// `forward_weight` sees it: 0.4 × the space 4 m ahead of him (half a second's sprint), 0.3 × the
 /// space where he stands, `forward_weight` × his closeness to the opponents' goal, (1 − distance
 /// over the pitch's length)^1.5, over the weights' sum.
-fn tactical_rating(p: &Player, opponents: &[Player], frame: TeamFrame, forward_weight: f32) -> f32 {
+fn tactical_rating(p: &Player, rivals: &Rivals, frame: TeamFrame, forward_weight: f32) -> f32 {
     let at = frame.vec2(p.position);
-    let ahead = free_space(at + Vec2::X * SPRINT_SPEED * 0.5, 0.5, opponents, frame);
-    let here = free_space(at + frame.vec2(p.velocity) * 0.1, 0.1, opponents, frame);
+    let ahead = free_space(at + Vec2::X * SPRINT_SPEED * 0.5, 0.5, rivals);
+    let here = free_space(at + frame.vec2(p.velocity) * 0.1, 0.1, rivals);
     (0.4 * ahead + 0.3 * here + forward_weight * closeness_to_goal(at)) / (0.7 + forward_weight)
 }
 
@@ -61,20 +95,12 @@ fn closeness_to_goal(at: Vec2) -> f32 {
 /// be early, up to a second, adds danger; one second of danger is no chance. A lofted ball is
 /// safe over the middle of its flight, needs 2.5 s more to be controlled in its second half, and
 /// carries 0.4 of danger anyway, so that a ground pass is preferred where it can be played.
-pub(crate) fn passing_odds(
-    origin: Vec2,
-    target: Vec2,
-    kind: KickKind,
-    opponents: &[Player],
-    frame: TeamFrame,
-    pace: f32,
-) -> f32 {
+pub(crate) fn passing_odds(origin: Vec2, target: Vec2, kind: KickKind, rivals: &Rivals, pace: f32) -> f32 {
     let line = target - origin;
     let length2 = line.length_squared().max(1e-6);
     let lofted = kind == KickKind::HighPass;
     let mut danger = if lofted { 0.4 } else { 0.0 };
-    for o in opponents.iter().filter(|o| o.active) {
-        let at = frame.vec2(o.position + o.velocity * 0.2);
+    for &at in rivals.at() {
         let u = (at - origin).dot(line) / length2;
         if !(0.0..=1.2).contains(&u) || (lofted && (0.2..=0.65).contains(&u)) {
             continue;
@@ -137,7 +163,8 @@ pub(crate) fn choose(
     let mismatch = ((ball_velocity - me.velocity).length() / 10.0).clamp(0.0, 1.0);
     let first_time = mismatch * (1.0 - 0.8 * passing);
 
-    let own = tactical_rating(me, opponents, frame, forward_weight);
+    let rivals = Rivals::of(opponents, frame);
+    let own = tactical_rating(me, &rivals, frame, forward_weight);
     let origin = frame.vec2(me.position + me.velocity * 0.12);
     let mut best: Option<PassChoice> = None;
     let mut best_total = 0.0;
@@ -151,7 +178,7 @@ pub(crate) fn choose(
         if best_rating(mate, frame, forward_weight) * keeper_factor + 1e-4 <= own + improvement {
             continue;
         }
-        let rating = tactical_rating(mate, opponents, frame, forward_weight) * keeper_factor;
+        let rating = tactical_rating(mate, &rivals, frame, forward_weight) * keeper_factor;
         if rating <= own + improvement {
             continue;
         }
@@ -161,7 +188,7 @@ pub(crate) fn choose(
             let o = if k == KickKind::HighPass && distance < 10.0 {
                 0.0
             } else {
-                passing_odds(origin, pass_point(frame.vec2(me.position), mate, k, frame), k, opponents, frame, 1.0)
+                passing_odds(origin, pass_point(frame.vec2(me.position), mate, k, frame), k, &rivals, 1.0)
             };
             if o > odds {
                 (kind, odds) = (k, o);
@@ -233,17 +260,17 @@ mod tests {
     fn an_opponent_on_the_line_spoils_a_ground_pass_but_not_a_lofted_one_over_him() {
         let frame = TeamFrame::of(Side::Left);
         let (from, to) = (Vec2::ZERO, Vec2::new(30.0, 0.0));
-        assert_eq!(passing_odds(from, to, KickKind::ShortPass, &[], frame, 1.0), 1.0);
+        assert_eq!(passing_odds(from, to, KickKind::ShortPass, &Rivals::of(&[], frame), 1.0), 1.0);
         // A lofted ball carries 0.4 of danger anyway.
-        assert!((passing_odds(from, to, KickKind::HighPass, &[], frame, 1.0) - 0.6).abs() < 1e-6);
+        assert!((passing_odds(from, to, KickKind::HighPass, &Rivals::of(&[], frame), 1.0) - 0.6).abs() < 1e-6);
         let midway = [player(Side::Right, 1, Role::CB, Vec2::new(12.0, 1.0))];
-        assert!(passing_odds(from, to, KickKind::ShortPass, &midway, frame, 1.0) < 0.2);
-        assert!((passing_odds(from, to, KickKind::HighPass, &midway, frame, 1.0) - 0.6).abs() < 1e-6);
+        assert!(passing_odds(from, to, KickKind::ShortPass, &Rivals::of(&midway, frame), 1.0) < 0.2);
+        assert!((passing_odds(from, to, KickKind::HighPass, &Rivals::of(&midway, frame), 1.0) - 0.6).abs() < 1e-6);
         // Far off the line he is no danger; behind the passer neither.
         let wide = [player(Side::Right, 1, Role::CB, Vec2::new(12.0, 25.0))];
-        assert_eq!(passing_odds(from, to, KickKind::ShortPass, &wide, frame, 1.0), 1.0);
+        assert_eq!(passing_odds(from, to, KickKind::ShortPass, &Rivals::of(&wide, frame), 1.0), 1.0);
         let behind = [player(Side::Right, 1, Role::CB, Vec2::new(-8.0, 0.0))];
-        assert_eq!(passing_odds(from, to, KickKind::ShortPass, &behind, frame, 1.0), 1.0);
+        assert_eq!(passing_odds(from, to, KickKind::ShortPass, &Rivals::of(&behind, frame), 1.0), 1.0);
     }
 
     #[test]

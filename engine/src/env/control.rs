@@ -48,11 +48,19 @@ pub(crate) fn designated(game: &Match, side: Side, path: &LazyPath) -> Option<us
     {
         return Some(i);
     }
-    let time = |i: usize| time_to_ball(game, path, &team[i]);
     let any_outfield = (0..team.len()).any(|i| selectable(game, side, i));
-    (0..team.len())
-        .filter(|&i| team[i].active && team[i].controllable && (!any_outfield || !team[i].is_keeper()))
-        .min_by(|&a, &b| time(a).total_cmp(&time(b)))
+    // Each candidate's time worked out once (`min_by` worked out both times of every pair it
+    // compared, and this runs every step); the first of equal times wins, as with `min_by`.
+    let mut best: Option<(usize, f32)> = None;
+    for i in
+        (0..team.len()).filter(|&i| team[i].active && team[i].controllable && (!any_outfield || !team[i].is_keeper()))
+    {
+        let t = time_to_ball(game, path, &team[i]);
+        if best.is_none_or(|(_, bt)| t.total_cmp(&bt).is_lt()) {
+            best = Some((i, t));
+        }
+    }
+    best.map(|(i, _)| i)
 }
 
 fn selectable(game: &Match, side: Side, i: usize) -> bool {

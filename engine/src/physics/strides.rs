@@ -32,7 +32,10 @@ pub(crate) struct Stride {
 /// then [`Strides::finish`]: a full group moves at once, and the few left at the end one by one.
 pub(crate) struct Strides {
     who: [usize; LANES],
-    strides: [Stride; LANES],
+    /// The pushed players' state and strides, one lane each (see [`COLUMNS`]): written
+    /// straight into the lanes as they are pushed (gathered as whole `Stride`s and then
+    /// transposed, the copies cost more than the lanes' arithmetic).
+    columns: [[f32; LANES]; COLUMNS],
     len: usize,
     /// Length of the tick (s).
     dt: f32,
@@ -41,34 +44,11 @@ pub(crate) struct Strides {
 impl Strides {
     /// No one yet, for a tick of `dt` seconds.
     pub(crate) fn new(dt: f32) -> Strides {
-        Strides { who: [0; LANES], strides: [Stride::default(); LANES], len: 0, dt }
+        Strides { who: [0; LANES], columns: [[0.0; LANES]; COLUMNS], len: 0, dt }
     }
 
     /// Moves `players[g]` by `stride`, now or with the next three players pushed.
     pub(crate) fn push(&mut self, players: &mut [Player], g: usize, stride: Stride) {
-        self.who[self.len] = g;
-        self.strides[self.len] = stride;
-        self.len += 1;
-        if self.len == LANES {
-            move_four(players, &self.who, &self.strides, self.dt);
-            self.len = 0;
-        }
-    }
-
-    /// Moves the players pushed since the last full group.
-    pub(crate) fn finish(&mut self, players: &mut [Player]) {
-        for k in 0..self.len {
-            let s = self.strides[k];
-            move_player(&mut players[self.who[k]], s.velocity, s.look, s.limits, self.dt);
-        }
-        self.len = 0;
-    }
-}
-
-/// The four players `who` (distinct) each by his stride: [`move_player`] in four lanes.
-fn move_four(players: &mut [Player], who: &[usize; LANES], strides: &[Stride; LANES], dt: f32) {
-    let mut columns = [[0.0f32; LANES]; 12];
-    for (k, (&g, s)) in who.iter().zip(strides).enumerate() {
         let p = &players[g];
         let row = [
             p.position.x,
@@ -77,17 +57,45 @@ fn move_four(players: &mut [Player], who: &[usize; LANES], strides: &[Stride; LA
             p.velocity.y,
             p.facing.x,
             p.facing.y,
-            s.velocity.x,
-            s.velocity.y,
-            s.look.x,
-            s.look.y,
-            s.limits.acceleration,
-            s.limits.deceleration,
+            stride.velocity.x,
+            stride.velocity.y,
+            stride.look.x,
+            stride.look.y,
+            stride.limits.acceleration,
+            stride.limits.deceleration,
         ];
-        for (column, value) in columns.iter_mut().zip(row) {
+        let k = self.len;
+        for (column, value) in self.columns.iter_mut().zip(row) {
             column[k] = value;
         }
+        self.who[k] = g;
+        self.len += 1;
+        if self.len == LANES {
+            move_four(players, &self.who, &self.columns, self.dt);
+            self.len = 0;
+        }
     }
+
+    /// Moves the players pushed since the last full group.
+    pub(crate) fn finish(&mut self, players: &mut [Player]) {
+        let c = &self.columns;
+        for k in 0..self.len {
+            let velocity = Vec2::new(c[6][k], c[7][k]);
+            let look = Vec2::new(c[8][k], c[9][k]);
+            let limits = MotionLimits { acceleration: c[10][k], deceleration: c[11][k] };
+            move_player(&mut players[self.who[k]], velocity, look, limits, self.dt);
+        }
+        self.len = 0;
+    }
+}
+
+/// Values per pushed player: his position, velocity and facing (x, y each), then his stride's
+/// velocity, look, acceleration and deceleration.
+const COLUMNS: usize = 12;
+
+/// The four players `who` (distinct), each by his stride, their lanes in `columns` (as
+/// [`Strides::push`] writes them): [`move_player`] in four lanes.
+fn move_four(players: &mut [Player], who: &[usize; LANES], columns: &[[f32; LANES]; COLUMNS], dt: f32) {
     let [px, py, vx, vy, fx, fy, mut dx, mut dy, lx, ly, acceleration, deceleration] = columns.map(Vec4::from_array);
     let zero = Vec4::ZERO;
 

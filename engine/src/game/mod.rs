@@ -50,11 +50,13 @@ pub(crate) const GOAL_DEAD_TICKS: u16 = 60;
 /// Ticks of dead time after the ball leaves the pitch before the set piece is ready.
 pub(crate) const OUT_DEAD_TICKS: u16 = 100;
 /// GRF's possession test behind [`Match::observed_owner`]
-/// (docs/grf-compatibility.md#raw-observation): the highest ball (m, its centre), the reach (m)
-/// and the most the ball's velocity may differ from the player's (m/s).
+/// (docs/grf-compatibility.md#raw-observation): the highest ball (m, its centre) and the most the
+/// ball's velocity may differ from the player's (m/s).
 const OBSERVED_POSSESSION_HEIGHT: f32 = 0.5;
-const OBSERVED_POSSESSION_REACH: f32 = 1.0;
 const OBSERVED_POSSESSION_SPEED: f32 = 6.0;
+/// GRF's possession test's reach (m) from a player's [`Player::possession_point`]: the observed
+/// owner's, and a slow loose ball's for a player to take it.
+pub(super) const POSSESSION_REACH: f32 = 1.0;
 
 /// The world: ball, both teams, score, game mode and referee state, and the built-in AI.
 #[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
@@ -377,11 +379,10 @@ impl Match {
         }
         let g = self.last_touch?;
         let p = &self.players[g];
-        let near = p.position + p.velocity * 0.05 + p.facing * 0.1;
         let holds = p.active
             && self.pending_pass != Some(g)
             && self.ball.position.z <= OBSERVED_POSSESSION_HEIGHT
-            && near.distance_squared(self.ball.xy()) <= OBSERVED_POSSESSION_REACH * OBSERVED_POSSESSION_REACH
+            && p.possession_point().distance_squared(self.ball.xy()) <= POSSESSION_REACH * POSSESSION_REACH
             && (self.ball.velocity - p.velocity.extend(0.0)).length_squared()
                 <= OBSERVED_POSSESSION_SPEED * OBSERVED_POSSESSION_SPEED;
         holds.then_some((p.side, p.index))

@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use super::{GameMode, Match};
+use super::{GameMode, Match, POSSESSION_REACH};
 use crate::geometry::pitch::{BALL_RADIUS, HALF_LENGTH, in_penalty_area};
 use crate::rules::{self, Stoppage, fouls};
 use crate::stats::Event;
@@ -12,8 +12,6 @@ use crate::stats::Event;
 const FOOT_REACH: f32 = 0.7;
 /// Reach (m) for a ball moving slower than [`SLOW_BALL`] (m/s) relative to the player.
 const STILL_BALL_REACH: f32 = 1.15;
-/// GRF's possession test: a slow ball within this (m) of the point just ahead of a player.
-const POSSESSION_REACH: f32 = 1.0;
 const SLOW_BALL: f32 = 3.0;
 /// Highest ball (m) an outfield player controls (head height).
 const FOOT_HEIGHT: f32 = 1.9;
@@ -371,10 +369,9 @@ impl Match {
             } else if p.is_sliding() {
                 (SLIDE_REACH, FOOT_HEIGHT)
             } else if (ball.velocity.truncate() - p.velocity).length_squared() < SLOW_BALL * SLOW_BALL {
-                // A slow ball is easy to step to: GRF's possession test, a metre from the point
-                // 0.05 s of his run and 0.1 m along his facing ahead of him (so a player walking
-                // away from a ball leaves it, and one walking onto it takes it).
-                from = p.position + p.velocity * 0.05 + p.facing * 0.1;
+                // A slow ball is easy to step to: GRF's possession test, a metre from his
+                // possession point.
+                from = p.possession_point();
                 (POSSESSION_REACH, FOOT_HEIGHT)
             } else {
                 (FOOT_REACH, FOOT_HEIGHT)

@@ -3,10 +3,10 @@
 //! A player's tick of movement is a short chain of square roots and divisions (the acceleration
 //! limit, the turn, the renormalised facing), each waiting on the one before, and it runs for
 //! every player every tick. Four players in the four lanes of a `Vec4` share one chain (measured:
-//! a full match's step 2-4 % faster; the processor already overlapped much of the players' work). Every lane computes exactly what [`move_player`] computes (glam's
-//! `Vec4` arithmetic, square root and division are IEEE's, lane by lane, and each branch becomes
-//! a select of the value the taken branch gives), so the players move the same bit for bit; the
-//! test below holds it to that.
+//! a full match's step 2-4 % faster; the processor already overlapped much of the players' work).
+//! Every lane computes exactly what [`move_player`] computes (glam's `Vec4` arithmetic, square
+//! root and division are IEEE's, lane by lane, and each branch becomes a select of the value the
+//! taken branch gives), so the players move the same bit for bit; the test below holds it to that.
 
 use glam::{Vec2, Vec4};
 

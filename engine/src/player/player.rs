@@ -74,6 +74,14 @@ pub const SPRINT_SPEED: f32 = 8.0;
 pub const DRIBBLE_SPEED: f32 = 3.5;
 
 impl Player {
+    /// GRF's possession point (m): 0.05 s of his run and 0.1 m along his facing ahead of him.
+    /// GRF's possession test measures the ball from here
+    /// (docs/grf-compatibility.md#raw-observation), so a player walking away from a ball leaves it
+    /// and one walking onto it takes it.
+    pub(crate) fn possession_point(&self) -> Vec2 {
+        self.position + self.velocity * 0.05 + self.facing * 0.1
+    }
+
     /// A fresh player standing at `position` (m), facing the opponents' goal.
     pub fn new(side: Side, index: usize, role: Role, position: Vec2, home: Vec2) -> Player {
         Player {

@@ -33,8 +33,8 @@ pub(crate) struct Stride {
 pub(crate) struct Strides {
     who: [usize; LANES],
     /// The pushed players' state and strides, one lane each (see [`COLUMNS`]): written
-    /// straight into the lanes as they are pushed (gathered as whole `Stride`s and then
-    /// transposed, the copies cost more than the lanes' arithmetic).
+    /// straight into the lanes as they are pushed (gathered as whole `Stride`s and transposed
+    /// afterwards, every value was copied twice).
     columns: [[f32; LANES]; COLUMNS],
     len: usize,
     /// Length of the tick (s).

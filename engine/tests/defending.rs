@@ -240,3 +240,52 @@ fn a_hard_pass_goes_through_a_defender_it_reaches_late_and_meets_one_it_reaches_
         "the pass struck 1.5 m from the defender ran on past him: {soon:?}"
     );
 }
+
+#[test]
+fn a_keeper_waits_ten_metres_out_while_the_ball_is_in_the_other_half() {
+    // GRF 2.10's keeper works out his place between ball and goal only while the ball (0.6 s
+    // ahead) is in his half; otherwise he stands 10 m in front of the centre of his goal. Our
+    // keeper, with our team on the ball deep in their half, stood 30 % of the way out to it
+    // before (about 25 m out with the ball 30 m into their half).
+    let mut env = common::builtin_env("11_vs_11_stochastic", 4);
+    let mut deep_for = 0;
+    let mut checked = 0;
+    for step in 0..1500 {
+        env.step(&[Action::BuiltinAi]).unwrap();
+        let game = env.game();
+        deep_for = if game.ball().position.x > 25.0 && game.mode() == GameMode::Normal { deep_for + 1 } else { 0 };
+        if deep_for >= 20 {
+            let keeper = game.team(Side::Left)[0].position;
+            assert!(
+                keeper.distance(glam::Vec2::new(-45.0, 0.0)) < 1.5,
+                "step {step}: ball at x = {:.0}, our keeper at {keeper}",
+                game.ball().position.x
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 20, "the ball was deep in their half for {checked} steps only");
+}
+
+#[test]
+fn a_keeper_runs_for_a_loose_ball_he_is_clearly_first_to_outside_his_area() {
+    // GRF's team AI sends the quickest of all 22 to a loose ball, keeper or not. A slow ball lies
+    // 15 m in front of their keeper, outside his area; his team-mates are 25 m from it, ours 40 m:
+    // he goes and gets it (before, he stayed on his line while a team-mate was quicker to the
+    // ball than any of ours).
+    let mut env = common::builtin_env("11_vs_11_stochastic", 1);
+    let game = env.game_mut();
+    for i in 1..11 {
+        game.place_player(Side::Right, i, glam::Vec2::new(0.0, -30.0 + 6.0 * i as f32));
+        game.place_player(Side::Left, i, glam::Vec2::new(-15.0, -30.0 + 6.0 * i as f32));
+    }
+    game.place_player(Side::Right, 0, glam::Vec2::new(40.0, 0.0));
+    game.place_ball(glam::Vec3::new(25.0, 0.0, 0.11), glam::Vec3::ZERO, None);
+    let mut nearest = f32::INFINITY;
+    for _ in 0..300 {
+        game.tick();
+        let keeper = game.team(Side::Right)[0].position;
+        nearest = nearest.min(keeper.distance(game.ball().xy()));
+    }
+    assert!(nearest < 1.0, "their keeper came no nearer the ball than {nearest:.1} m");
+}

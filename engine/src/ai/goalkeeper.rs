@@ -1,9 +1,12 @@
-//! The goalkeeper: stands on the line between ball and goal centre, comes off his line as the
-//! ball comes closer, moves across (and dives) to shots heading into goal, rushes out to loose balls
-//! he reaches first, and distributes the ball once he holds it.
+//! The goalkeeper (GRF 2.10's keeper, docs/grf-compatibility.md#team-ai): with the ball in his
+//! half he stands on the line between ball and goal centre and comes off it as the ball comes
+//! closer; with the ball in the other half he waits 10 m out. He moves across (and dives) to
+//! shots heading into goal, rushes out at a carrier nobody covers, goes for loose balls he
+//! reaches clearly first, and distributes the ball once he holds it.
 
 use glam::Vec2;
 
+use super::prediction::SAMPLE_DT;
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::game::{Kick, KickKind, KickTarget};
 use crate::geometry::pitch::{GOAL_HALF_WIDTH, HALF_LENGTH, in_penalty_area};
@@ -28,6 +31,22 @@ const SHOOTING_DISTANCE: f32 = 20.0;
 const ENGAGED: f32 = 10.0;
 /// A rushing keeper goes for the spot this far short of the ball (m), on its goal side.
 const RUSH_SHORT_OF_BALL: f32 = 0.5;
+/// How far in front of his goal line (m) the keeper waits while the ball is in the other half
+/// (GRF 2.10's keeper line distance).
+const OTHER_HALF_LINE: f32 = 10.0;
+/// Where the keeper looks for the ball to judge which half it is in: this far ahead on its path
+/// (s), plus [`LOOK_AHEAD_PER_REACH`] of his own time to reach it (GRF 2.10's keeper).
+const LOOK_AHEAD: f32 = 0.6;
+const LOOK_AHEAD_PER_REACH: f32 = 0.2;
+/// GRF 2.10's designation margins, which stand in for its memory of who was sent: the keeper goes
+/// for a loose ball outside his area only when (his time + 0.01 s) is under 0.85 × (the quickest
+/// opponent's + 0.01 s) (the match's designated player, GRF's 10 ms and 15 %) and (his time +
+/// 0.5 s) is under 0.8 × (his quickest team-mate's + 0.5 s) (the team's).
+const MATCH_MARGIN: (f32, f32) = (0.01, 0.85);
+const TEAM_MARGIN: (f32, f32) = (0.5, 0.8);
+/// A keeper not sent for a loose ball in the other half stops when he and an opponent would both
+/// meet it sooner than this (s): GRF's AI plays a ball it needs under a second to reach.
+const NOT_SENT_WAITS: f32 = 1.0;
 /// A keeper with nobody to give the ball to clears it this far along his facing (m): GRF's high
 /// pass at input power 0.5.
 const CLEARANCE: f32 = 30.0;
@@ -40,6 +59,8 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
     let ball_t = frame.vec2(ball);
     let me_t = frame.vec2(me.position);
     let goal_t = Vec2::new(-HALF_LENGTH, 0.0);
+    // When and where he can meet the ball, as the team AI reckons its outfield players' times.
+    let (t_keeper, meet) = analysis.path.intercept(me.position, me.max_speed * 0.9, 1.0);
 
     // A ball on its way into the goal: get across to where it crosses the line.
     if view.owner.is_none() {
@@ -66,6 +87,30 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
                 return Plan::go(at, me.max_speed, ball - me.position);
             }
         }
+        // Anywhere else, a loose ball he reaches first of all 22 players: he goes for it like any
+        // other player (GRF's team AI sends the quickest to the ball, keeper or not), and plays
+        // it first time when an opponent is close behind (`clearance`).
+        if sent_for_the_ball(t_keeper, analysis)
+            && analysis.chaser.is_none_or(|(_, mate, _)| clearly_quicker(t_keeper, mate, TEAM_MARGIN))
+        {
+            return Plan::go(meet, me.max_speed, ball - me.position);
+        }
+    }
+
+    // With the ball bound for the other half he takes his spot 10 m in front of his goal (GRF's
+    // keeper works out his place on the ball-goal line, and the rush below, only while the ball,
+    // as he sees it 0.6 s on plus a fifth of his own time to it, is in his half).
+    if !ball_in_own_half(t_keeper, analysis) {
+        let contested = t_keeper.max(analysis.opponent_time) < NOT_SENT_WAITS;
+        if view.owner.is_none() && contested && !sent_for_the_ball(t_keeper, analysis) {
+            // A loose ball an opponent is about to reach as soon as he can, which he was not sent
+            // for: GRF's keeper never plays it (only the player sent for a ball controls it) and
+            // lets it run past; touchline's would take it by running onto it, so he waits.
+            return Plan::go(me.position, 0.0, ball - me.position);
+        }
+        let target = frame.vec2(Vec2::new(-HALF_LENGTH + OTHER_HALF_LINE, 0.0));
+        let speed = (target.distance(me.position) * 3.0).min(me.max_speed);
+        return Plan::go(target, speed, ball - me.position);
     }
 
     // GRF's rush rule: against a carrier (or the opponent nearest a loose ball) whose shooting
@@ -101,6 +146,30 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
     // GRF's keeper moves at a pace that grows with the distance to his spot, up to a sprint.
     let speed = (target.distance(me.position) * 3.0).min(me.max_speed);
     Plan::go(target, speed, ball - me.position)
+}
+
+/// Whether a time to the ball of `t` (s) beats `other`'s by the `(pad, share)` margin: (t + pad) <
+/// share × (other + pad).
+fn clearly_quicker(t: f32, other: f32, (pad, share): (f32, f32)) -> bool {
+    t + pad < share * (other + pad)
+}
+
+/// Whether a keeper who needs `t` (s) to reach the loose ball is the one GRF would send for it
+/// ahead of every opponent: [`MATCH_MARGIN`] quicker than the quickest of them. GRF's keeper
+/// plays the ball, or runs for it like an outfielder, only as the match's designated player; a
+/// keeper merely level with an opponent leaves it (GRF: the side already sent stays sent).
+fn sent_for_the_ball(t: f32, analysis: &Analysis) -> bool {
+    clearly_quicker(t, analysis.opponent_time, MATCH_MARGIN)
+}
+
+/// Whether the ball, as GRF's keeper looks ahead at it, is in his own half: where it will be
+/// [`LOOK_AHEAD`] on plus [`LOOK_AHEAD_PER_REACH`] of his time to reach it (the last sample of its
+/// path if later). `t_keeper`: his time to reach it (s).
+fn ball_in_own_half(t_keeper: f32, analysis: &Analysis) -> bool {
+    let ahead = LOOK_AHEAD + LOOK_AHEAD_PER_REACH * t_keeper;
+    let samples = analysis.path.at();
+    let k = ((ahead / SAMPLE_DT).round() as usize).clamp(1, samples.len()) - 1;
+    analysis.frame.vec2(samples[k].truncate()).x < 0.0
 }
 
 /// Whether a team-mate of keeper `g` covers the shooting point of a carrier at `carrier_t` (team

@@ -32,7 +32,8 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
-#: Metres per observation unit along and across the pitch (GRF's raw coordinates; kick_profile.py).
+#: Metres per observation unit along and across the pitch (GRF's raw coordinates), the values of
+#: kick_profile.py: not imported from it, since it imports touchline, which GRF's Python lacks.
 METRES_X = 54.4
 METRES_Y = 83.6
 #: Steps of 0.1 s.

@@ -8,6 +8,7 @@ mod magnet;
 mod mode;
 mod possession;
 mod tick;
+mod trip;
 
 use std::ops::Range;
 use std::sync::Arc;
@@ -98,6 +99,9 @@ pub struct Match {
     /// The free ball's last predicted path (see `BallPathMemo`): a cache, not part of a snapshot.
     #[serde(skip)]
     pub(crate) paths: crate::ai::prediction::BallPathMemo,
+    /// This tick's body contacts (see `Match::trip_players`): scratch, not part of a snapshot.
+    #[serde(skip)]
+    pub(crate) contacts: crate::physics::Contacts,
     /// Player who last had the ball at his feet (cleared at kickoffs): a trap by an opponent of
     /// his is a [`Event::PossessionWon`].
     pub(crate) possessor: Option<usize>,
@@ -214,6 +218,7 @@ impl Match {
             magnet: [None; 2],
             magnet_tick: 0,
             paths: Default::default(),
+            contacts: Default::default(),
             possessor: None,
             score: [0, 0],
             mode: GameMode::Normal,

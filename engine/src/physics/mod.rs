@@ -3,6 +3,7 @@
 
 mod ball;
 mod colliders;
+mod contacts;
 mod player_motion;
 mod strides;
 
@@ -10,7 +11,8 @@ pub use ball::{
     BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_QUADRATIC, ROLL_QUADRATIC_TOTAL, rolled_speed,
 };
 pub use colliders::{PitchColliders, Surface};
-pub(crate) use player_motion::{MotionLimits, keep_inside_rim, separate_players};
+pub(crate) use contacts::{Contact, Contacts};
+pub(crate) use player_motion::{MIN_DIST, MotionLimits, keep_inside_rim, separate_players};
 pub(crate) use strides::{Stride, Strides};
 
 /// Length of one tick (s): 10 ms, GRF's physics step (docs/grf-compatibility.md#time-base).

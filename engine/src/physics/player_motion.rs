@@ -3,11 +3,14 @@
 
 use glam::{Vec2, Vec4};
 
+use super::contacts::{Contact, Contacts};
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH, RIM_HALF_LENGTH, RIM_HALF_WIDTH};
 use crate::player::{MAX_PLAYERS_PER_TEAM, Player};
 
 /// Radius of a player's body for collisions (m).
 pub(crate) const BODY_RADIUS: f32 = 0.35;
+/// Bodies overlap nearer than this (m): two radii.
+pub(crate) const MIN_DIST: f32 = 2.0 * BODY_RADIUS;
 
 /// A player's movement limits, from his attributes and team difficulty.
 #[derive(Clone, Copy, Debug)]
@@ -98,6 +101,8 @@ const PULL_ANGLE_COS: f32 = 0.587_785_3;
 const PULL_ANGLE_SIN: f32 = 0.809_017;
 /// How far (m) each of two players in contact, neither on the ball, steps aside per tick.
 const SIDESTEP: f32 = 0.02;
+/// How far ahead (s) a contact's depth is judged: GRF's 30 ms.
+const CONTACT_LOOKAHEAD: f32 = 0.03;
 /// Most a contact moves a player in one tick (m): GRF clamps offsets to 8 m/s × 10 ms.
 const MAX_CONTACT_STEP: f32 = 0.08;
 
@@ -111,18 +116,19 @@ const MAX_CONTACT_STEP: f32 = 0.08;
 /// scanned first and only the rows (player `i` against everyone after him) that hold a contact
 /// are resolved: the same pairs in the same order, so the same result bit for bit, without
 /// walking every pair of `Player`s every tick.
-pub(crate) fn separate_players(players: &mut [Player], owner: Option<usize>) {
+pub(crate) fn separate_players(players: &mut [Player], owner: Option<usize>, contacts: &mut Contacts) {
+    contacts.clear();
     let n = players.len();
     if n > MAX_PLAYERS {
         // More than a match holds (scenarios allow 11 a side): no compact copy, every row.
         for i in 0..n {
-            resolve_contacts(players, i, owner);
+            resolve_contacts(players, i, owner, contacts);
         }
     } else {
         let mut bodies = Bodies::of(players);
         for i in 0..n {
             if players[i].active && bodies.may_touch_later(i, n) {
-                resolve_contacts(players, i, owner);
+                resolve_contacts(players, i, owner, contacts);
                 bodies = Bodies::of(players);
             }
         }
@@ -132,8 +138,6 @@ pub(crate) fn separate_players(players: &mut [Player], owner: Option<usize>) {
     }
 }
 
-/// Bodies overlap nearer than this (m): two radii.
-const MIN_DIST: f32 = 2.0 * BODY_RADIUS;
 /// Most players in a match.
 const MAX_PLAYERS: usize = 2 * MAX_PLAYERS_PER_TEAM;
 /// [`MAX_PLAYERS`] rounded up to whole groups of four, the width of the scan's SIMD operations.
@@ -176,8 +180,9 @@ impl Bodies {
     }
 }
 
-/// Resolves the contacts of player `i` with each player after him, in order.
-fn resolve_contacts(players: &mut [Player], i: usize, owner: Option<usize>) {
+/// Resolves the contacts of player `i` with each player after him, in order, noting each in
+/// `contacts`.
+fn resolve_contacts(players: &mut [Player], i: usize, owner: Option<usize>, contacts: &mut Contacts) {
     if !players[i].active {
         return;
     }
@@ -195,6 +200,8 @@ fn resolve_contacts(players: &mut [Player], i: usize, owner: Option<usize>) {
         // neither pushes the other along the length of the pitch.
         let normal = if dist > 1e-5 { d / dist } else { Vec2::new(0.0, 1.0) };
         let overlap = MIN_DIST - dist;
+        let ahead = (d + (players[j].velocity - players[i].velocity) * CONTACT_LOOKAHEAD).length();
+        contacts.push(Contact { i: i as u8, j: j as u8, apart: dist, ahead });
         let share_i = match owner {
             Some(o) if o == i => CARRIER_SHARE,
             Some(o) if o == j => 1.0 - CARRIER_SHARE,
@@ -272,10 +279,12 @@ mod tests {
             let owner = (seed % 3 != 0).then_some(seed as usize % MAX_PLAYERS);
             let mut scanned = crowd(seed);
             let mut every_row = scanned.clone();
-            separate_players(&mut scanned, owner);
+            let (mut a, mut b) = (Contacts::default(), Contacts::default());
+            separate_players(&mut scanned, owner, &mut a);
             for i in 0..every_row.len() {
-                resolve_contacts(&mut every_row, i, owner);
+                resolve_contacts(&mut every_row, i, owner, &mut b);
             }
+            assert_eq!(a.as_slice(), b.as_slice());
             every_row.iter_mut().for_each(keep_inside_rim);
             for (a, b) in scanned.iter().zip(&every_row) {
                 assert_eq!(a.position.to_array().map(f32::to_bits), b.position.to_array().map(f32::to_bits));

@@ -64,6 +64,10 @@ pub struct Player {
     /// Ticks until the touch of a standing tackle he has started lands (0: none).
     #[serde(default)]
     pub(crate) interfere_ticks: u16,
+    /// Ticks left of a stumble or fall after a body contact (GRF's trip, `game/trip.rs`): he
+    /// cannot steer or touch the ball.
+    #[serde(default)]
+    pub(crate) trip_ticks: u16,
 }
 
 /// Walking speed (m/s) with a direction and no modifier (docs/grf-compatibility.md#action-effects).
@@ -108,6 +112,7 @@ impl Player {
             queued_kick: None,
             controlling_ball: false,
             interfere_ticks: 0,
+            trip_ticks: 0,
         }
     }
 

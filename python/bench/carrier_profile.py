@@ -76,17 +76,10 @@ def carrier(obs: Observation) -> tuple[float, float] | None:
 
 def profile(scenario: str, steps: int, seed: int) -> CarrierProfile:
     """The carriers of one run of `steps` steps with the built-in AI on every player."""
-    env = cases.make_env(scenario, seed, builtin_ai=True)
-    policy = cases.make_policy("builtin_ai", env, seed)
-    policy.start()
-    first = env.reset()
-    obs = first[0] if isinstance(first, list) else first
     result = CarrierProfile()
     owner: tuple[int, int] | None = None
     spell = 0
-    for step in range(steps):
-        stepped, _, done, _ = env.step(policy.act(step, obs))
-        obs = stepped[0] if isinstance(stepped, list) else stepped
+    for obs in cases.builtin_match(scenario, steps, seed):
         seen = carrier(obs)
         if seen is not None:
             result.speeds.append(seen[0])
@@ -98,8 +91,6 @@ def profile(scenario: str, steps: int, seed: int) -> CarrierProfile:
                 result.spells.append(spell)
             owner, spell = now, 0
         spell += 1
-        if done:
-            break
     if owner is not None:
         result.spells.append(spell)
     return result

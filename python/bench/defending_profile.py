@@ -103,19 +103,9 @@ def observe(obs: Observation, into: DefendingProfile) -> bool:
 
 def profile(scenario: str, steps: int, seed: int) -> DefendingProfile:
     """One run of `steps` steps with the built-in AI on every player."""
-    env = cases.make_env(scenario, seed, builtin_ai=True)
-    policy = cases.make_policy("builtin_ai", env, seed)
-    policy.start()
-    first = env.reset()
-    obs = first[0] if isinstance(first, list) else first
     result = DefendingProfile()
-    for step in range(steps):
-        stepped, _, done, _ = env.step(policy.act(step, obs))
-        obs = stepped[0] if isinstance(stepped, list) else stepped
+    for obs in cases.builtin_match(scenario, steps, seed):
         observe(obs, result)
-        if done:
-            break
-    env.close()
     return result
 
 

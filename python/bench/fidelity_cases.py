@@ -20,7 +20,7 @@ import copy
 import math
 import statistics
 import zlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -193,6 +193,25 @@ def make_policy(name: str, env: FootballEnv, seed: int) -> Policy:
     if name == "builtin_ai":
         return Constant(BUILTIN_AI)
     raise ValueError(f"unknown policy {name!r}")
+
+
+def builtin_match(scenario: str, steps: int, seed: int) -> Iterator[Observation]:
+    """The observation after each step of one run of at most `steps` steps with the built-in AI on
+    every player, up to the episode's end (the match-profiling tools' loop)."""
+    env = make_env(scenario, seed, builtin_ai=True)
+    policy = make_policy("builtin_ai", env, seed)
+    policy.start()
+    first = env.reset()
+    obs = first[0] if isinstance(first, list) else first
+    try:
+        for step in range(steps):
+            stepped, _, done, _ = env.step(policy.act(step, obs))
+            obs = stepped[0] if isinstance(stepped, list) else stepped
+            yield obs
+            if done:
+                return
+    finally:
+        env.close()
 
 
 class EndTracker:

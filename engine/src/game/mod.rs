@@ -3,6 +3,7 @@
 
 mod action;
 mod input;
+mod interfere;
 pub(crate) mod kick;
 mod magnet;
 mod mode;

@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use super::{GameMode, Match, POSSESSION_REACH};
+use super::{GameMode, Match, POSSESSION_REACH, interfere};
 use crate::geometry::pitch::{BALL_RADIUS, in_penalty_area};
 use crate::physics::TICK_SECONDS;
 use crate::rules::{self, Stoppage, fouls};
@@ -46,11 +46,6 @@ const FIRST_STEP_TICKS: u64 = 10;
 const FIRST_TOUCH_TICK: u64 = 35;
 /// How near (m) a challenger must be to the carrier's ball to trip him.
 const TACKLE_RANGE: f32 = 0.9;
-/// A standing tackle (GRF's interfere) is started with the ball this near (m; GRF's animations
-/// reach about 1.3 m) ...
-const INTERFERE_REACH: f32 = 1.3;
-/// ... and its touch lands this many ticks later, drawn uniformly (GRF: 150-250 ms).
-const INTERFERE_TICKS: (u16, u16) = (15, 25);
 /// Sliding tackle reach (m).
 const SLIDE_REACH: f32 = 1.3;
 /// The chance a keeper gets his hands to a shot that passes within hand reach of him, by the
@@ -126,7 +121,10 @@ impl Match {
                 self.claimed(owner, q);
                 return;
             }
-            if d2 >= INTERFERE_REACH * INTERFERE_REACH {
+            let in_reach = d2 < interfere::REACH * interfere::REACH;
+            let starts = p.interfere_ticks == 0
+                && interfere::starts(p.position, p.velocity, ball, self.ball.velocity.truncate());
+            if !in_reach && !starts {
                 continue;
             }
             if p.is_keeper() && p.velocity.length_squared() > KEEPER_TACKLE_SPEED * KEEPER_TACKLE_SPEED {
@@ -140,14 +138,14 @@ impl Match {
                 continue;
             }
             match p.interfere_ticks {
-                0 => {
-                    // GRF's standing tackle (its interfere): started whenever the ball is in
-                    // reach, its touch lands 150-250 ms later.
-                    let wind_up = INTERFERE_TICKS.0
-                        + (self.rng.unit() * (INTERFERE_TICKS.1 - INTERFERE_TICKS.0 + 1) as f32) as u16;
+                0 if starts => {
+                    // GRF's standing tackle (its interfere): started when its touch would meet
+                    // the ball, which lands 150-250 ms later.
+                    let (shortest, longest) = interfere::WIND_UP_TICKS;
+                    let wind_up = shortest + (self.rng.unit() * (longest - shortest + 1) as f32) as u16;
                     self.players[q].interfere_ticks = wind_up;
                 }
-                1 => {
+                1 if in_reach => {
                     // The touch: nearer the ball than the carrier, he takes it cleanly; else he
                     // knocks it away from himself.
                     if d2 < carrier_at.distance_squared(ball) {

@@ -55,10 +55,6 @@ const FATIGUE_EVERY: u64 = 10;
 const FATIGUE_SECONDS: f32 = FATIGUE_EVERY as f32 * TICK_SECONDS;
 /// Where a dribbler keeps the ball: this far ahead of him (m).
 const CARRY_DISTANCE: f32 = 0.5;
-/// Fastest (m/s) a player winding up a standing tackle moves: GRF's interfere animations carry
-/// the body at 1.1-1.4 m/s from a stand and 2.0-3.7 m/s from a walk (5.8 m/s for the one long
-/// reach from a sprint), whatever the player was asked to do.
-const INTERFERE_PACE: f32 = 3.7;
 /// Top speed with the ball at one's feet (m/s): the ball slows a sprinter down a little.
 const BALL_CARRIER_SPRINT: f32 = 7.2;
 
@@ -418,7 +414,7 @@ impl Match {
                 } else if p.interfere_ticks > 0 {
                     // Winding up a standing tackle he goes in at the tackle's own pace, not at his
                     // run's: he meets the ball without running into the man.
-                    INTERFERE_PACE.min(p.max_speed)
+                    super::interfere::PACE.min(p.max_speed)
                 } else {
                     p.max_speed
                 };

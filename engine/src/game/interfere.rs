@@ -1,0 +1,62 @@
+//! The standing tackle (GRF's interfere): when a challenger starts one, how fast he goes in while
+//! he winds it up, and how near the ball must be when its touch lands.
+//!
+//! GRF picks an interfere animation only if the animation's touch would meet the ball, with the
+//! body carried by the animation's own movement (docs/grf-compatibility.md, "a defender against an
+//! idle carrier"). So a challenger coming in fast starts his tackle before the ball is in reach
+//! and slows on the way in: in GRF 2.10.2's academy_counterattack_hard the hunter sprinting at an
+//! idle carrier slows from 7.4 to 3.8 m/s over the last 1.8 m and touches the ball with his body
+//! 0.8 m from the carrier's. Started only once the ball was within reach, touchline's hunter ran
+//! into the carrier at 7 m/s before his touch and stumbled.
+
+use glam::Vec2;
+
+use crate::physics::{MotionLimits, TICK_SECONDS};
+
+/// Fastest (m/s) a player winding up a standing tackle moves: GRF's interfere animations carry
+/// the body at 1.1-1.4 m/s from a stand and 2.0-3.7 m/s from a walk (5.8 m/s for the one long
+/// reach from a sprint), whatever the player was asked to do.
+pub(super) const PACE: f32 = 3.7;
+/// The touch lands with the ball this near (m; GRF's animations reach about 1.3 m).
+pub(super) const REACH: f32 = 1.3;
+/// Ticks from the start to the touch, drawn uniformly (GRF: 150-250 ms).
+pub(super) const WIND_UP_TICKS: (u16, u16) = (15, 25);
+
+/// Whether a challenger at `at` (m) running at `velocity` (m/s) starts a standing tackle on a
+/// ball at `ball` moving at `ball_velocity`: whether, by the earliest touch, his run slowed to
+/// [`PACE`] at his deceleration and the ball's run bring the ball within [`REACH`]. A standing
+/// challenger starts as the ball comes within reach; one sprinting at 7 m/s about 2.2 m out.
+pub(super) fn starts(at: Vec2, velocity: Vec2, ball: Vec2, ball_velocity: Vec2) -> bool {
+    let t = f32::from(WIND_UP_TICKS.0) * TICK_SECONDS;
+    let speed = velocity.length();
+    let run = if speed <= PACE {
+        speed * t
+    } else {
+        let deceleration = MotionLimits::default().deceleration;
+        // Braking to the tackle's pace, then at it.
+        let braking = ((speed - PACE) / deceleration).min(t);
+        let slowed = speed - deceleration * braking;
+        0.5 * (speed + slowed) * braking + PACE * (t - braking)
+    };
+    let mine = at + velocity.normalize_or_zero() * run;
+    mine.distance_squared(ball + ball_velocity * t) < REACH * REACH
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_sprinter_starts_his_tackle_before_the_ball_is_in_reach_and_a_standing_man_as_it_comes() {
+        let ball = Vec2::new(2.1, 0.0);
+        let sprint = Vec2::new(7.0, 0.0);
+        assert!(starts(Vec2::ZERO, sprint, ball, Vec2::ZERO), "2.1 m out at 7 m/s");
+        assert!(!starts(Vec2::ZERO, sprint, Vec2::new(2.5, 0.0), Vec2::ZERO), "2.5 m out at 7 m/s");
+        assert!(!starts(Vec2::ZERO, Vec2::ZERO, ball, Vec2::ZERO), "2.1 m out, standing");
+        assert!(starts(Vec2::ZERO, Vec2::ZERO, Vec2::new(1.2, 0.0), Vec2::ZERO), "1.2 m out, standing");
+        // Running away from the ball, or past it, he does not go in.
+        assert!(!starts(Vec2::ZERO, -sprint, Vec2::new(1.2, 0.0), Vec2::ZERO));
+        // A ball run towards him comes into reach sooner.
+        assert!(starts(Vec2::ZERO, Vec2::ZERO, ball, Vec2::new(-6.0, 0.0)));
+    }
+}

@@ -6,7 +6,7 @@
 //! idle carrier"). So a challenger coming in fast starts his tackle before the ball is in reach
 //! and slows on the way in: in GRF 2.10.2's academy_counterattack_hard the hunter sprinting at an
 //! idle carrier slows from 7.4 to 3.8 m/s over the last 1.8 m and touches the ball with his body
-//! 0.8 m from the carrier's. Started only once the ball was within reach, touchline's hunter ran
+//! 0.7 m from the carrier's. Started only once the ball was within reach, touchline's hunter ran
 //! into the carrier at 7 m/s before his touch and stumbled.
 
 use glam::Vec2;

@@ -44,7 +44,45 @@ pub(super) fn starts(at: Vec2, velocity: Vec2, ball: Vec2, ball_velocity: Vec2) 
 
 #[cfg(test)]
 mod tests {
+    use glam::Vec3;
+
     use super::*;
+    use crate::game::Match;
+    use crate::player::Role;
+    use crate::scenario::{PlayerEntry, Scenario};
+
+    /// Our centre midfielder standing at the centre spot with the ball 0.4 m ahead of him; theirs
+    /// at `at` running at `velocity`, facing him across the ball.
+    fn challenge(at: Vec2, velocity: Vec2) -> Match {
+        let s = Scenario {
+            left_team: vec![PlayerEntry::new(Role::CM, -0.5, 0.0)],
+            right_team: vec![PlayerEntry::new(Role::CM, -0.5, 0.0)],
+            ..Scenario::default()
+        };
+        let mut m = Match::new(&s, 0, 0);
+        m.players[0].position = Vec2::ZERO;
+        m.players[0].velocity = Vec2::ZERO;
+        m.players[0].facing = Vec2::X;
+        m.players[1].position = at;
+        m.players[1].velocity = velocity;
+        m.players[1].facing = Vec2::NEG_X;
+        m.ball.position = Vec3::new(0.4, 0.0, 0.11);
+        m.ball.velocity = Vec3::ZERO;
+        m.owner = Some(0);
+        m
+    }
+
+    #[test]
+    fn in_play_the_sprinter_goes_in_from_where_the_walker_does_not() {
+        // 2.1 m from the ball: at 7 m/s his touch would meet it, at 1 m/s it would not.
+        let mut sprinting = challenge(Vec2::new(2.5, 0.0), Vec2::new(-7.0, 0.0));
+        sprinting.settle_possession();
+        assert!(sprinting.players[1].interfere_ticks > 0, "the sprinter starts his tackle");
+        let mut walking = challenge(Vec2::new(2.5, 0.0), Vec2::new(-1.0, 0.0));
+        walking.settle_possession();
+        assert_eq!(walking.players[1].interfere_ticks, 0, "the walker does not yet");
+        assert_eq!(walking.owner, Some(0));
+    }
 
     #[test]
     fn a_sprinter_starts_his_tackle_before_the_ball_is_in_reach_and_a_standing_man_as_it_comes() {

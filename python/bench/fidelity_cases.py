@@ -31,6 +31,7 @@ IDLE = 0
 RIGHT = 5
 LONG_PASS = 9
 HIGH_PASS = 10
+SHORT_PASS = 11
 SHOT = 12
 SLIDING = 16
 #: action_set 'v2' adds it: the controlled player is handed to the built-in AI.

@@ -12,6 +12,8 @@ agent pressed on one of the last `KICK_WINDOW` steps of his team's possession (`
   * `goal for` / `goal against`: the scoring reward;
   * `time limit`: the episode ran out with the ball loose.
 
+A spell that ends on the step it began (a goal off a first-time touch) lasts 0 steps.
+
 Per (button, end) it prints the spells' count, their mean and median length (steps), how far the
 ball ended from where the spell began (m) and how high it got (m). Episodes are run as the harness
 runs them (`fidelity_cases`: the same policies, raw observation, scoring reward), each with an env

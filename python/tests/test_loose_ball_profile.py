@@ -48,7 +48,7 @@ def test_a_random_agent_in_a_drill_loses_the_ball_and_every_spell_ends() -> None
     for spell in found:
         assert spell.end in profile.ENDS
         assert spell.button in (*profile.BUTTONS.values(), "none")
-        assert spell.steps >= 1 and spell.distance >= 0.0 and spell.highest >= 0.0
+        assert spell.steps >= 0 and spell.distance >= 0.0 and spell.highest >= 0.0
 
 
 def test_an_idle_carrier_never_lets_the_ball_go_loose_by_a_button() -> None:

@@ -8,7 +8,8 @@ agent pressed on one of the last `KICK_WINDOW` steps of his team's possession (`
 `short`, `shot`; `none` when he pressed none: a tackle, a knock or a lost touch) and under its end:
 
   * `ours` / `theirs`: a player of that team has the ball;
-  * `out`: play stopped with no goal (game_mode left 0);
+  * `out: corner`, `out: goal kick`, `out: throw-in`, `out: free kick`: play stopped with no goal,
+    for that restart (game_mode left 0);
   * `goal for` / `goal against`: the scoring reward;
   * `time limit`: the episode ran out with the ball loose.
 
@@ -29,7 +30,8 @@ touchline at 0da7081):
 
 GRF's ball, once the agent's team loses it, goes out of play twice as often and stays loose longer
 before his team has it back: touchline's team gets it back sooner and more often, so its episodes
-hold more, shorter spells.
+hold more, shorter spells. Of GRF's 43 outs, 24 gave the opponents a goal kick: the agent's
+passes and shots going over their goal line, 2-5 m high on average; touchline's, 12 of 19.
 
 Usage (from the repository root, with the package installed):
     PYTHONPATH=python/bench python3 python/bench/loose_ball_profile.py SCENARIO N [--seed S]
@@ -60,7 +62,15 @@ KICK_WINDOW = 8
 #: Metres per raw observation unit along and across the pitch (GRF's raw coordinates).
 METRES_X = 54.4
 METRES_Y = 68.0 / 0.84
-ENDS = ("ours", "theirs", "out", "goal for", "goal against", "time limit")
+#: The restart a ball out of play gives, by game_mode (GRF's raw observation).
+OUTS = {
+    cases.GOAL_KICK: "out: goal kick",
+    cases.FREE_KICK: "out: free kick",
+    cases.CORNER: "out: corner",
+    cases.THROW_IN: "out: throw-in",
+    cases.PENALTY: "out: penalty",
+}
+ENDS = ("ours", "theirs", *OUTS.values(), "out: other", "goal for", "goal against", "time limit")
 
 
 @dataclasses.dataclass
@@ -124,7 +134,7 @@ def spell_end(owner: int, mode: int, reward: float, done: bool) -> str | None:
     if reward < 0:
         return "goal against"
     if mode != cases.NORMAL:
-        return "out"
+        return OUTS.get(mode, "out: other")
     if owner != -1:
         return "ours" if owner == 0 else "theirs"
     if done:
@@ -144,7 +154,7 @@ def table(found: list[Spell]) -> list[str]:
         group = groups[key]
         steps = [s.steps for s in group]
         lines.append(
-            f"{key[0]:>5} -> {key[1]:<12} {len(group):4d} spells, {statistics.mean(steps):5.1f} steps "
+            f"{key[0]:>5} -> {key[1]:<14} {len(group):4d} spells, {statistics.mean(steps):5.1f} steps "
             f"(median {statistics.median(steps):g}), {statistics.mean(s.distance for s in group):5.1f} m, "
             f"highest {statistics.mean(s.highest for s in group):.2f} m"
         )

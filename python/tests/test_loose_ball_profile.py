@@ -19,21 +19,22 @@ def test_a_spell_ends_as_grf_ends_an_episode_goal_first_then_the_stoppage_then_t
     # A goal restarts with a kickoff (game_mode 1) on the step it is scored: the goal counts.
     assert profile.spell_end(owner=-1, mode=1, reward=1.0, done=True) == "goal for"
     assert profile.spell_end(owner=-1, mode=1, reward=-1.0, done=False) == "goal against"
-    assert profile.spell_end(owner=-1, mode=2, reward=0.0, done=True) == "out"
+    assert profile.spell_end(owner=-1, mode=2, reward=0.0, done=True) == "out: goal kick"
+    assert profile.spell_end(owner=1, mode=5, reward=0.0, done=False) == "out: throw-in"
 
 
 def test_the_table_groups_spells_by_button_then_end() -> None:
     spells = [
         profile.Spell("shot", 10, 20.0, 1.0, "theirs"),
-        profile.Spell("long", 30, 10.0, 3.0, "out"),
-        profile.Spell("long", 10, 30.0, 1.0, "out"),
+        profile.Spell("long", 30, 10.0, 3.0, "out: corner"),
+        profile.Spell("long", 10, 30.0, 1.0, "out: corner"),
         profile.Spell("long", 5, 2.0, 0.5, "ours"),
     ]
     lines = profile.table(spells)
-    assert [line.split()[:3] for line in lines] == [
-        ["long", "->", "ours"],
-        ["long", "->", "out"],
-        ["shot", "->", "theirs"],
+    assert [line.split()[:4] for line in lines] == [
+        ["long", "->", "ours", "1"],
+        ["long", "->", "out:", "corner"],
+        ["shot", "->", "theirs", "1"],
     ]
     assert "2 spells,  20.0 steps (median 20),  20.0 m, highest 2.00 m" in lines[1]
 

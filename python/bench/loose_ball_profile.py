@@ -8,8 +8,8 @@ agent pressed on one of the last `KICK_WINDOW` steps of his team's possession (`
 `short`, `shot`; `none` when he pressed none: a tackle, a knock or a lost touch) and under its end:
 
   * `ours` / `theirs`: a player of that team has the ball;
-  * `out: corner`, `out: goal kick`, `out: throw-in`, `out: free kick`: play stopped with no goal,
-    for that restart (game_mode left 0);
+  * `out: corner`, `out: goal kick`, `out: throw-in`, `out: free kick`, `out: penalty`: play
+    stopped with no goal, for that restart (game_mode left 0; `out: other` for any other mode);
   * `goal for` / `goal against`: the scoring reward;
   * `time limit`: the episode ran out with the ball loose.
 
@@ -61,7 +61,7 @@ BUTTONS = {
 KICK_WINDOW = 8
 #: Metres per raw observation unit along and across the pitch (GRF's raw coordinates).
 METRES_X = 54.4
-METRES_Y = 68.0 / 0.84
+METRES_Y = cases.METRES_PER_Y
 #: The restart a ball out of play gives, by game_mode (GRF's raw observation).
 OUTS = {
     cases.GOAL_KICK: "out: goal kick",

@@ -35,7 +35,6 @@ import statistics
 
 import fidelity_cases as cases
 from fidelity_cases import Observation
-from kick_profile import METRES_X, METRES_Y
 
 #: Speed bands (m/s): GRF's gait switches, with standing below 1 m/s.
 BANDS = (1.0, 4.2, 6.0)
@@ -66,9 +65,9 @@ def carrier(obs: Observation) -> tuple[float, float] | None:
     player = int(obs["ball_owned_player"])
     at = obs[own][player]
     step = obs[own + "_direction"][player]
-    speed = math.hypot(float(step[0]) * METRES_X, float(step[1]) * METRES_Y) * 10.0
+    speed = math.hypot(float(step[0]) * cases.METRES_X, float(step[1]) * cases.METRES_Y) * 10.0
     nearest = min(
-        math.hypot(float(o[0] - at[0]) * METRES_X, float(o[1] - at[1]) * METRES_Y)
+        math.hypot(float(o[0] - at[0]) * cases.METRES_X, float(o[1] - at[1]) * cases.METRES_Y)
         for o in obs[other]
     )
     return speed, nearest

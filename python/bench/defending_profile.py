@@ -42,7 +42,6 @@ import math
 
 import fidelity_cases as cases
 from fidelity_cases import Observation
-from kick_profile import METRES_X, METRES_Y
 
 #: The carrier's x (observation units) from which his side is in its attacking 40 %.
 ATTACKING_X = 0.2
@@ -71,7 +70,7 @@ class DefendingProfile:
 def speed(step: object) -> float:
     """Speed (m/s) of one observed `*_direction` row (the movement of one 0.1 s step)."""
     dx, dy = float(step[0]), float(step[1])  # type: ignore[index]
-    return math.hypot(dx * METRES_X, dy * METRES_Y) * 10.0
+    return math.hypot(dx * cases.METRES_X, dy * cases.METRES_Y) * 10.0
 
 
 def observe(obs: Observation, into: DefendingProfile) -> bool:
@@ -87,12 +86,12 @@ def observe(obs: Observation, into: DefendingProfile) -> bool:
     nearest = math.inf
     for at, step in zip(obs["right_team"][1:], obs["right_team_direction"][1:]):
         dx, dy = float(at[0] - carrier[0]), float(at[1] - carrier[1])
-        nearest = min(nearest, math.hypot(dx * METRES_X, dy * METRES_Y))
+        nearest = min(nearest, math.hypot(dx * cases.METRES_X, dy * cases.METRES_Y))
         if dx > 0.0:
             ahead += 1
         else:
             into.behind_speed.append(speed(step))
-            into.behind_run_back.append(float(step[0]) * METRES_X * 10.0)
+            into.behind_run_back.append(float(step[0]) * cases.METRES_X * 10.0)
     into.goal_side.append(ahead)
     into.nearest.append(nearest)
     for i, step in enumerate(obs["left_team_direction"]):

@@ -47,8 +47,14 @@ RESTARTS = {
     PENALTY: "penalties",
 }
 ENDS = ("goal", "out_of_play", "possession", "time_limit")
-#: Metres per unit of raw y: the pitch's 0.84 units of width are 68 m.
+#: Metres per unit of raw y for team width against real football: the pitch's 0.84 units of
+#: width scaled to a real pitch's 68 m.
 METRES_PER_Y = 68.0 / 0.84
+#: Metres per unit of raw x and y as GRF's engine converts them (it divides its world by 54.4 m
+#: and 83.6 m; docs/grf-compatibility.md): the profiles' distances and paces, the same in both
+#: engines. A unit of y is longer than one of x.
+METRES_X = 54.4
+METRES_Y = 83.6
 #: Role index of a goalkeeper in `left_team_roles` / `right_team_roles`.
 GOALKEEPER_ROLE = 0
 #: Metres per second per unit of raw ball movement per step (55 m per unit of x, 0.1 s a step):
@@ -62,6 +68,11 @@ KICK_SPEED = 8.0
 AFTER_KICK = 25
 
 Observation = dict[str, Any]
+
+
+def metres(a: tuple[float, float], b: tuple[float, float]) -> float:
+    """Distance (m) between two points given in raw observation units (GRF's world scale)."""
+    return math.hypot((a[0] - b[0]) * METRES_X, (a[1] - b[1]) * METRES_Y)
 
 
 def case_seed(base_seed: int, case_id: str) -> int:

@@ -31,7 +31,6 @@ import statistics
 
 import fidelity_cases as cases
 from fidelity_cases import Observation
-from kick_profile import METRES_X
 from touchline.compat.gfootball import FootballEnv
 
 #: GRF's default action set (docs/grf-compatibility.md#actions): the eight directions and shot.
@@ -48,7 +47,7 @@ MAX_STEPS = 40
 def ball_speed(obs: Observation) -> float:
     """The ball's horizontal speed (m/s) from the raw observation's per-step displacement."""
     dx, dy = float(obs["ball_direction"][0]), float(obs["ball_direction"][1])
-    return math.hypot(dx * METRES_X, dy * cases.METRES_PER_Y) * 10.0
+    return math.hypot(dx * cases.METRES_X, dy * cases.METRES_Y) * 10.0
 
 
 def probe(env: FootballEnv, owned_steps: int, moves: str, rng: random.Random) -> int | None:

@@ -25,21 +25,12 @@ from __future__ import annotations
 
 import collections
 import dataclasses
-import math
 import statistics
 
 import fidelity_cases as cases
 
-#: Metres per observation unit along and across the pitch (GRF's raw coordinates).
-METRES_X = 54.4
-METRES_Y = 83.6
 #: Steps a kicked ball is followed before it counts as loose for good.
 FOLLOW_STEPS = 80
-
-
-def metres(a: tuple[float, float], b: tuple[float, float]) -> float:
-    """Distance (m) between two points in observation units."""
-    return math.hypot((a[0] - b[0]) * METRES_X, (a[1] - b[1]) * METRES_Y)
 
 
 @dataclasses.dataclass
@@ -72,7 +63,7 @@ def profile(scenario: str, steps: int, seed: int) -> dict[str, list[tuple[float,
         height = float(obs["ball"][2])
         owner = int(obs["ball_owned_team"])
         mode = int(obs["game_mode"])
-        speed = metres(ball, previous) * 10.0
+        speed = cases.metres(ball, previous) * 10.0
         if open_kick is not None:
             open_kick.highest = max(open_kick.highest, height)
             if owner != -1 or mode != 0 or step - open_kick.step > FOLLOW_STEPS:
@@ -84,7 +75,12 @@ def profile(scenario: str, steps: int, seed: int) -> dict[str, list[tuple[float,
                     who = "owned"  # the kicker's team is unknown for a first-time kick
                 else:
                     who = "same" if owner == open_kick.team else "other"
-                row = (metres(ball, open_kick.start), open_kick.highest, step - open_kick.step, who)
+                row = (
+                    cases.metres(ball, open_kick.start),
+                    open_kick.highest,
+                    step - open_kick.step,
+                    who,
+                )
                 kicks[open_kick.kind].append(row)
                 open_kick = None
         jump = speed - previous_speed > cases.KICK_JUMP and speed > cases.KICK_SPEED

@@ -44,7 +44,6 @@ from __future__ import annotations
 import argparse
 import collections
 import dataclasses
-import math
 import statistics
 
 import fidelity_cases as cases
@@ -59,9 +58,6 @@ BUTTONS = {
 #: A button counts for a spell when pressed on one of this many steps before it began (a pass
 #: pressed on the ball leaves the foot 3-5 steps later in both engines).
 KICK_WINDOW = 8
-#: Metres per raw observation unit along and across the pitch (GRF's raw coordinates).
-METRES_X = 54.4
-METRES_Y = cases.METRES_PER_Y
 #: The restart a ball out of play gives, by game_mode (GRF's raw observation).
 OUTS = {
     cases.GOAL_KICK: "out: goal kick",
@@ -82,11 +78,6 @@ class Spell:
     distance: float
     highest: float
     end: str
-
-
-def metres(a: tuple[float, float], b: tuple[float, float]) -> float:
-    """Distance (m) between two points in raw observation units."""
-    return math.hypot((a[0] - b[0]) * METRES_X, (a[1] - b[1]) * METRES_Y)
 
 
 def spells(scenario: str, policy: str, episode: int, seed: int) -> list[Spell]:
@@ -118,7 +109,9 @@ def spells(scenario: str, policy: str, episode: int, seed: int) -> list[Spell]:
             highest = max(highest, float(obs["ball"][2]))
             end = spell_end(now, int(obs["game_mode"]), reward, done)
             if end is not None:
-                found.append(Spell(start[2], step - start[0], metres(ball, start[1]), highest, end))
+                found.append(
+                    Spell(start[2], step - start[0], cases.metres(ball, start[1]), highest, end)
+                )
                 start = None
         owner = now
         if done:

@@ -11,7 +11,7 @@ BENCH = Path(__file__).resolve().parents[1] / "bench"
 sys.path.insert(0, str(BENCH))
 
 import carrier_profile  # noqa: E402 (found through BENCH)
-from kick_profile import METRES_X  # noqa: E402
+from fidelity_cases import METRES_X  # noqa: E402
 
 
 def observation(owner_team: int, mode: int = 0) -> dict[str, object]:

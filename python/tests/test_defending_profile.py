@@ -12,7 +12,7 @@ BENCH = Path(__file__).resolve().parents[1] / "bench"
 sys.path.insert(0, str(BENCH))
 
 import defending_profile  # noqa: E402 (found through BENCH)
-from kick_profile import METRES_X  # noqa: E402
+from fidelity_cases import METRES_X  # noqa: E402
 
 
 def observation(carrier_x: float, owner_team: int = 0, mode: int = 0) -> dict[str, object]:

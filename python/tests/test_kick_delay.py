@@ -13,14 +13,14 @@ sys.path.insert(0, str(BENCH))
 
 import fidelity_cases as cases  # noqa: E402 (found through BENCH)
 import kick_delay  # noqa: E402
-from kick_profile import METRES_X  # noqa: E402
+from fidelity_cases import METRES_X  # noqa: E402
 
 
 def test_the_ball_s_speed_comes_from_its_displacement_per_step() -> None:
     obs = {"ball_direction": np.array([0.02, 0.0, 0.0])}
     assert abs(kick_delay.ball_speed(obs) - 0.02 * METRES_X * 10.0) < 1e-9
     obs = {"ball_direction": np.array([0.0, -0.01, 0.3])}
-    assert abs(kick_delay.ball_speed(obs) - 0.01 * cases.METRES_PER_Y * 10.0) < 1e-9
+    assert abs(kick_delay.ball_speed(obs) - 0.01 * cases.METRES_Y * 10.0) < 1e-9
 
 
 def test_a_shot_pressed_on_the_run_leaves_his_foot_a_few_steps_later() -> None:

@@ -13,8 +13,11 @@ Events, each `step:what@x,y` (raw observation units):
   * `mode M` the game_mode became M (2 goal kick, 3 free kick, 4 corner, 5 throw-in, 6 penalty);
   * `act P` the agent's control passed to player P (the raw observation's `active`).
 
-A closing line counts the episodes in which the agent's team was never seen with the ball, and
-their mean length.
+Closing lines count the episodes in which the agent's team was never seen with the ball, and
+their mean length, and split the episodes by which team was first seen with it (`ours`, `theirs`,
+`nobody`): how many, how long and how they ended. GRF does not end an episode on a change of
+possession before someone had the ball, so the episodes the opponents start with the ball show
+what their carriers do against our team.
 
 Usage (from the repository root, with the package installed):
     PYTHONPATH=python/bench python3 python/bench/episode_timeline.py SCENARIO POLICY N [--seed S]
@@ -86,15 +89,19 @@ def main() -> None:
     ends: collections.Counter[str] = collections.Counter()
     lengths = []
     never_owned: list[int] = []
+    by_first: list[tuple[str, int, str]] = []
     for episode in range(args.episodes):
         length, end, events = timeline(args.scenario, args.policy, episode, args.seed)
         ends[end] += 1
         lengths.append(length)
         if not any(":own0." in event for event in events):
             never_owned.append(length)
+        by_first.append((first_owner(events), length, end))
         print(f"ep{episode} len{length} {end} | " + " ".join(events))
     print(f"mean length {sum(lengths) / len(lengths):.1f}; ends {dict(ends)}")
     print(ownership_line(len(lengths), never_owned))
+    for line in first_owner_lines(by_first):
+        print(line)
 
 
 def ownership_line(episodes: int, never_owned: list[int]) -> str:
@@ -104,6 +111,33 @@ def ownership_line(episodes: int, never_owned: list[int]) -> str:
     if not never_owned:
         return share
     return f"{share} (mean length {sum(never_owned) / len(never_owned):.1f})"
+
+
+def first_owner(events: list[str]) -> str:
+    """Which team an episode's events first show with the ball: `ours` (the agent's, team 0),
+    `theirs` (team 1) or `nobody`."""
+    for event in events:
+        if ":own0." in event:
+            return "ours"
+        if ":own1." in event:
+            return "theirs"
+    return "nobody"
+
+
+def first_owner_lines(rows: list[tuple[str, int, str]]) -> list[str]:
+    """One line per first owner (ours, theirs, nobody, those that occur): how many episodes, their
+    mean length and how they ended. `rows`: (first owner, length, end) per episode."""
+    lines = []
+    for who in ("ours", "theirs", "nobody"):
+        group = [(length, end) for first, length, end in rows if first == who]
+        if not group:
+            continue
+        ends = collections.Counter(end for _, end in group)
+        mean = sum(length for length, _ in group) / len(group)
+        lines.append(
+            f"first {who}: {len(group)} episodes, mean length {mean:.1f}, ends {dict(ends)}"
+        )
+    return lines
 
 
 if __name__ == "__main__":

@@ -25,7 +25,7 @@ use std::ops::Range;
 use glam::Vec2;
 
 pub use difficulty::Difficulty;
-pub use prediction::BallPath;
+pub use prediction::{BallPath, SAMPLE_DT};
 
 use crate::game::{GameMode, Kick, PlayerInput};
 use crate::geometry::{Side, TeamFrame};

@@ -39,6 +39,10 @@ fn go_for_ball(p: &Player, carrier: &Player, ball: Vec2, own_goal: Vec2) -> Vec2
     }
 }
 
+/// How near (m) the ball need come for the chaser to meet it (the reach of the team's
+/// interception estimate, [`super::prediction::BallPath::intercept`]).
+const MEETING_REACH: f32 = 0.6;
+
 /// Nearest (m) a goal-side presser holds off a carrier he waits for: where GRF's hunter, straight
 /// goal-side, stops needing to move ([`needs_defending_movement`] flips at about 2.6 m).
 const GUARD_MIN: f32 = 2.8;
@@ -89,14 +93,22 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Diffic
             // A loose ball: the team's quickest player to it goes for it (GRF gives the run only to
             // the quicker team's man; tried, it starved touchline's attack of loose balls: 0.7
             // goals a match between equal sides instead of 2.8).
-            let (chaser, _, meet) = analysis.chaser?;
+            let (chaser, time, meet) = analysis.chaser?;
             if chaser != g {
                 return None;
             }
             // Close to it: go straight at it.
             let target =
                 if p.position.distance(ball) < 3.0 { ball + view.ball.velocity.truncate() * 0.1 } else { meet };
-            Some(Plan { run_through: true, ..Plan::go(target, p.max_speed, ball - p.position) })
+            // Just in time: GRF's to-ball run asks for the pace that gets him to the meeting
+            // point as the ball gets there, his top speed times the time he needs at it over
+            // the time the ball takes (`AI_GetToBallMovement`), so a pass coming at him is met,
+            // not run into and knocked away. GRF runs flat out instead when an opponent is
+            // about as quick to the ball (its haste); that part is not taken
+            // (docs/grf-compatibility.md#team-ai, "how fast a player goes for a loose ball").
+            let needed = (p.position.distance(meet) - MEETING_REACH).max(0.0) / p.max_speed.max(1e-3);
+            let speed = if time > 0.0 { p.max_speed * (needed / time).clamp(0.0, 1.0) } else { p.max_speed };
+            Some(Plan { run_through: true, ..Plan::go(target, speed, ball - p.position) })
         }
     }
 }

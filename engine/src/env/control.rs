@@ -81,21 +81,28 @@ impl Reach {
         Reach { from, velocity: p.velocity, pace: 0.94 * p.max_speed.max(0.1), running }
     }
 
-    /// How far short (m) of a ball at `target` he is at `t` s (negative: he has it).
-    fn short(&self, target: glam::Vec2, t: f32) -> f32 {
+    /// Where his foot is at `t` s going for a ball at `target` (m), and how far (m) it reaches then.
+    fn at(&self, target: glam::Vec2, t: f32) -> (glam::Vec2, f32) {
         let ramp = t.min(Self::RAMP);
         let carried = self.velocity * (ramp - ramp * ramp / (2.0 * Self::RAMP));
         let mut at = self.from + carried;
         if !self.running {
             at += (target - self.from).normalize_or_zero() * Self::AHEAD;
         }
-        let reach = Self::FOOT + self.pace * (ramp * ramp / (2.0 * Self::RAMP) + (t - ramp));
+        (at, Self::FOOT + self.pace * (ramp * ramp / (2.0 * Self::RAMP) + (t - ramp)))
+    }
+
+    /// How far short (m) of a ball at `target` he is at `t` s (negative: he has it).
+    fn short(&self, target: glam::Vec2, t: f32) -> f32 {
+        let (at, reach) = self.at(target, t);
         at.distance(target) - reach
     }
 
-    /// Whether he can be at a ball at `target` (m) within `t` s.
+    /// Whether he can be at a ball at `target` (m) within `t` s (squared: no square root on the
+    /// path's twenty samples for each of the team's players every step).
     fn by(&self, target: glam::Vec2, t: f32) -> bool {
-        self.short(target, t) < 0.0
+        let (at, reach) = self.at(target, t);
+        at.distance_squared(target) < reach * reach
     }
 
     /// Seconds he needs for a ball at `target` (m): the first 10 ms step at which he has it, found

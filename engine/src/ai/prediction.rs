@@ -13,6 +13,9 @@ use crate::physics::{BALL_DRAG, BOUNCE_RESTITUTION, Ball, rolled_speed};
 pub const SAMPLES: usize = 20;
 /// Time between samples (s).
 pub const SAMPLE_DT: f32 = 0.1;
+/// How near (m) a runner must come to a predicted position of the ball to meet it there
+/// ([`BallPath::intercept`]).
+pub(crate) const INTERCEPT_REACH: f32 = 0.6;
 
 /// The sample times (s): `SAMPLE_DT · (k + 1)` for sample k, as the samples are timed.
 const TIMES: [f32; SAMPLES] = {
@@ -119,12 +122,12 @@ impl BallPath {
     /// Earliest time (s) and place a runner at `from` with top speed `speed` (m/s) can meet the
     /// ball below `max_height` (m); after the horizon, the last sample plus the run to it.
     ///
-    /// The first sample k with `z <= max_height` and `|xy − from| − 0.6 <= speed · t_k`, tested
-    /// four samples at a time: each lane computes what a scalar loop over the samples would
+    /// The first sample k with `z <= max_height` and `|xy − from| − INTERCEPT_REACH <= speed · t_k`,
+    /// tested four samples at a time: each lane computes what a scalar loop over the samples would
     /// (glam's `Vec4` arithmetic and square root are IEEE's, lane by lane), so the answer is the
     /// same bit for bit.
     pub fn intercept(&self, from: Vec2, speed: f32, max_height: f32) -> (f32, Vec2) {
-        let reach = Vec4::splat(0.6);
+        let reach = Vec4::splat(INTERCEPT_REACH);
         let (fx, fy) = (Vec4::splat(from.x), Vec4::splat(from.y));
         let (speed4, max_height) = (Vec4::splat(speed), Vec4::splat(max_height));
         let [xs, ys, zs] = &self.lanes;
@@ -257,7 +260,7 @@ mod tests {
     fn intercept_sample_by_sample(path: &BallPath, from: Vec2, speed: f32, max_height: f32) -> (f32, Vec2) {
         for (k, p) in path.at.iter().enumerate() {
             let t = SAMPLE_DT * (k + 1) as f32;
-            if p.z <= max_height && (p.truncate().distance(from) - 0.6) <= speed * t {
+            if p.z <= max_height && (p.truncate().distance(from) - INTERCEPT_REACH) <= speed * t {
                 return (t, p.truncate());
             }
         }
@@ -283,7 +286,7 @@ mod tests {
             let height = [1.0, 2.5][usize::from(next(1.0) > 0.0)];
             // A random top speed, and those on the edge of meeting one sample or missing it.
             let k = (next(1.0).abs() * (SAMPLES - 1) as f32) as usize;
-            let edge = (path.at[k].truncate().distance(from) - 0.6) / TIMES[k];
+            let edge = (path.at[k].truncate().distance(from) - INTERCEPT_REACH) / TIMES[k];
             for speed in [next(9.0).abs(), edge, edge.next_up(), edge.next_down()] {
                 let (t, at) = path.intercept(from, speed, height);
                 let (t0, at0) = intercept_sample_by_sample(&path, from, speed, height);

@@ -4,6 +4,7 @@
 
 use glam::Vec2;
 
+use super::prediction::INTERCEPT_REACH;
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::geometry::pitch::HALF_LENGTH;
 use crate::player::{Player, SPRINT_SPEED, difficulty_scale};
@@ -38,10 +39,6 @@ fn go_for_ball(p: &Player, carrier: &Player, ball: Vec2, own_goal: Vec2) -> Vec2
         carrier.position + carrier.velocity * 0.3 + (own_goal - carrier.position).normalize_or_zero() * 0.6
     }
 }
-
-/// How near (m) the ball need come for the chaser to meet it (the reach of the team's
-/// interception estimate, [`super::prediction::BallPath::intercept`]).
-const MEETING_REACH: f32 = 0.6;
 
 /// Nearest (m) a goal-side presser holds off a carrier he waits for: where GRF's hunter, straight
 /// goal-side, stops needing to move ([`needs_defending_movement`] flips at about 2.6 m).
@@ -106,7 +103,7 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Diffic
             // not run into and knocked away. GRF runs flat out instead when an opponent is
             // about as quick to the ball (its haste); that part is not taken
             // (docs/grf-compatibility.md#team-ai, "how fast a player goes for a loose ball").
-            let needed = (p.position.distance(meet) - MEETING_REACH).max(0.0) / p.max_speed.max(1e-3);
+            let needed = (p.position.distance(meet) - INTERCEPT_REACH).max(0.0) / p.max_speed.max(1e-3);
             let speed = if time > 0.0 { p.max_speed * (needed / time).clamp(0.0, 1.0) } else { p.max_speed };
             Some(Plan { run_through: true, ..Plan::go(target, speed, ball - p.position) })
         }

@@ -13,6 +13,7 @@ use std::cell::OnceCell;
 
 use crate::ai::BallPath;
 use crate::game::Match;
+use crate::game::kick::STANDING_RUN;
 use crate::geometry::Side;
 use crate::stats::Event;
 
@@ -75,7 +76,8 @@ impl Reach {
     const AHEAD: f32 = 0.1;
 
     fn of(p: &crate::player::Player) -> Reach {
-        let running = p.velocity.length_squared() > 1.8 * 1.8;
+        let running = p.velocity.length_squared() > STANDING_RUN * STANDING_RUN;
+        // A running player's foot is ahead along his run, one 10 ms step of it already taken.
         let from =
             if running { p.position + p.velocity.normalize() * Self::AHEAD + p.velocity * 0.01 } else { p.position };
         Reach { from, velocity: p.velocity, pace: 0.94 * p.max_speed.max(0.1), running }

@@ -110,7 +110,7 @@ pub(crate) fn ease(x: f32, bias: f32) -> f32 {
 
 /// Below this speed (m/s) a body is standing, and a kick's touch follows his facing rather than
 /// his run (GRF's idle-to-dribble switch, 1.8 m/s).
-const STANDING_RUN: f32 = 1.8;
+pub(crate) const STANDING_RUN: f32 = 1.8;
 
 /// How much further than his run a shooter's body has turned from the shot's line at the touch.
 /// GRF's touch direction is the kicking animation's own movement, and a shot hit across the run

@@ -15,6 +15,7 @@ use crate::ai::BallPath;
 use crate::game::Match;
 use crate::game::kick::STANDING_RUN;
 use crate::geometry::Side;
+use crate::player::MAX_PLAYERS_PER_TEAM;
 use crate::stats::Event;
 
 /// Highest ball (m) that counts as reached in the time-to-ball estimate (head height).
@@ -57,6 +58,8 @@ fn time_to_ball(game: &Match, path: &LazyPath, p: &crate::player::Player) -> f32
 /// and 0.51 s: the man four times nearer is not three times quicker. GRF steps this in 10 ms; here
 /// it is in closed form, and [`Reach::time_to`] searches it to the nearest 10 ms.
 struct Reach {
+    /// Where he is (m).
+    position: glam::Vec2,
     /// Where he starts from (m): his position and the foot's offset.
     from: glam::Vec2,
     /// His run (m/s).
@@ -65,6 +68,10 @@ struct Reach {
     pace: f32,
     /// Whether he is running (his foot is ahead along his run, else towards the ball).
     running: bool,
+    /// How far (m) his foot can reach from him before he moves: see [`Reach::within_limit`].
+    slack: f32,
+    /// The quicker (m/s) of his run and his pace.
+    fastest: f32,
 }
 
 impl Reach {
@@ -80,7 +87,10 @@ impl Reach {
         // A running player's foot is ahead along his run, one 10 ms step of it already taken.
         let from =
             if running { p.position + p.velocity.normalize() * Self::AHEAD + p.velocity * 0.01 } else { p.position };
-        Reach { from, velocity: p.velocity, pace: 0.94 * p.max_speed.max(0.1), running }
+        let pace = 0.94 * p.max_speed.max(0.1);
+        let run = p.velocity.length();
+        let slack = Self::AHEAD + 0.01 * run + Self::FOOT;
+        Reach { position: p.position, from, velocity: p.velocity, pace, running, slack, fastest: run.max(pace) }
     }
 
     /// Where his foot is at `t` s going for a ball at `target` (m), and how far (m) it reaches then.
@@ -103,8 +113,29 @@ impl Reach {
     /// Whether he can be at a ball at `target` (m) within `t` s (squared: no square root on the
     /// path's twenty samples for each of the team's players every step).
     fn by(&self, target: glam::Vec2, t: f32) -> bool {
+        if !self.within_limit(target, t) {
+            // Out of his reach whatever his run: most of the path's samples for most players.
+            return false;
+        }
         let (at, reach) = self.at(target, t);
         at.distance_squared(target) < reach * reach
+    }
+
+    /// A time (s) he cannot beat to a ball at `target` (m): see [`Reach::within_limit`].
+    fn lower_bound(&self, target: glam::Vec2) -> f32 {
+        let gap = self.position.distance(target) - self.slack;
+        (gap / self.fastest * 0.999 - 0.001).max(0.0)
+    }
+
+    /// Whether a ball at `target` (m) is within the farthest his foot can be from him at `t` s:
+    /// [`Reach::by`] is false where this is. His foot starts at most [`Reach::AHEAD`] plus one
+    /// 10 ms step of his run from him and reaches [`Reach::FOOT`] further (together `slack`); his
+    /// fading run and his building pace towards the ball share the time between them, so
+    /// together they carry it no faster than the quicker of the two. A thousandth and a
+    /// millimetre are added for rounding.
+    fn within_limit(&self, target: glam::Vec2, t: f32) -> bool {
+        let limit = (self.slack + self.fastest * t) * 1.001 + 0.001;
+        self.position.distance_squared(target) < limit * limit
     }
 
     /// Seconds he needs for a ball at `target` (m): the first 10 ms step at which he has it, found
@@ -137,12 +168,52 @@ pub(crate) fn designated(game: &Match, side: Side, path: &LazyPath) -> Option<us
         return Some(i);
     }
     let any_outfield = (0..team.len()).any(|i| selectable(game, side, i));
-    // Each candidate's time worked out once (`min_by` worked out both times of every pair it
-    // compared, and this runs every step); the first of equal times wins, as with `min_by`.
+    let eligible = |i: &usize| team[*i].active && team[*i].controllable && (!any_outfield || !team[*i].is_keeper());
+    let ball = game.ball();
+    if game.owner().is_some() || ball.velocity.length_squared() < SLOW_BALL * SLOW_BALL {
+        // Straight to the ball: each candidate's time is at least his lower bound, so taken in
+        // order of their bounds, no one whose bound is past the best time so far can beat it (most
+        // steps only the nearest two or three are timed; this runs every step a team is without
+        // the ball).
+        let mut order = [(0.0_f32, 0_usize); MAX_PLAYERS_PER_TEAM];
+        let mut n = 0;
+        for i in (0..team.len()).filter(eligible) {
+            if n == order.len() {
+                // More players than a team can have: time them all.
+                return fastest(game, path, team, (0..team.len()).filter(eligible));
+            }
+            order[n] = (Reach::of(&team[i]).lower_bound(ball.xy()), i);
+            n += 1;
+        }
+        let order = &mut order[..n];
+        order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let mut best: Option<(usize, f32)> = None;
+        for &(bound, i) in order.iter() {
+            if best.is_some_and(|(_, bt)| bound > bt) {
+                break;
+            }
+            let t = time_to_ball(game, path, &team[i]);
+            // The first of equal times wins, as in team order.
+            if best.is_none_or(|(bi, bt)| t.total_cmp(&bt).then(i.cmp(&bi)).is_lt()) {
+                best = Some((i, t));
+            }
+        }
+        return best.map(|(i, _)| i);
+    }
+    fastest(game, path, team, (0..team.len()).filter(eligible))
+}
+
+/// Of `candidates`, the player of `team` with the shortest time to the ball (the first of equal
+/// times). Each candidate's time is worked out once (`min_by` worked out both times of every pair
+/// it compared).
+fn fastest(
+    game: &Match,
+    path: &LazyPath,
+    team: &[crate::player::Player],
+    candidates: impl Iterator<Item = usize>,
+) -> Option<usize> {
     let mut best: Option<(usize, f32)> = None;
-    for i in
-        (0..team.len()).filter(|&i| team[i].active && team[i].controllable && (!any_outfield || !team[i].is_keeper()))
-    {
+    for i in candidates {
         let t = time_to_ball(game, path, &team[i]);
         if best.is_none_or(|(_, bt)| t.total_cmp(&bt).is_lt()) {
             best = Some((i, t));

@@ -127,8 +127,8 @@ impl Reach {
         (gap / self.fastest * 0.999 - 0.001).max(0.0)
     }
 
-    /// Whether a ball at `target` (m) is within the farthest his foot can be from him at `t` s:
-    /// [`Reach::by`] is false where this is. His foot starts at most [`Reach::AHEAD`] plus one
+    /// Whether a ball at `target` (m) is within the farthest his foot can be from him at `t` s
+    /// (where it is not, [`Reach::by`] is false). His foot starts at most [`Reach::AHEAD`] plus one
     /// 10 ms step of his run from him and reaches [`Reach::FOOT`] further (together `slack`); his
     /// fading run and his building pace towards the ball share the time between them, so
     /// together they carry it no faster than the quicker of the two. A thousandth and a
@@ -335,5 +335,70 @@ mod tests {
         assert!(towards < standing && standing < away, "{towards} {standing} {away}");
         assert!(Reach::of(&player(Vec2::new(6.0, 0.0))).by(ball, towards + 0.01));
         assert!(!Reach::of(&player(Vec2::new(6.0, 0.0))).by(ball, towards - 0.02));
+    }
+
+    /// Uniform in [0, 1), from a fixed xorshift.
+    fn uniform(state: &mut u32) -> f32 {
+        *state ^= *state << 13;
+        *state ^= *state >> 17;
+        *state ^= *state << 5;
+        (*state % 100_000) as f32 / 100_000.0
+    }
+
+    #[test]
+    fn the_pruning_bounds_never_rule_out_a_time_he_makes() {
+        let mut state = 0x2545_F491;
+        for _ in 0..3_000 {
+            let mut p = player(Vec2::new(18.0 * uniform(&mut state) - 9.0, 18.0 * uniform(&mut state) - 9.0));
+            p.max_speed = 6.0 + 2.5 * uniform(&mut state);
+            if uniform(&mut state) < 0.2 {
+                p.velocity *= 0.1;
+            }
+            let target = Vec2::new(60.0 * uniform(&mut state) - 30.0, 40.0 * uniform(&mut state) - 20.0);
+            let reach = Reach::of(&p);
+            let time = reach.time_to(target);
+            assert!(reach.lower_bound(target) <= time, "{} > {time}", reach.lower_bound(target));
+            for k in 0..=250 {
+                let t = k as f32 * 0.01;
+                // `by` without its shortcut: the foot's place and reach themselves.
+                let (at, foot) = reach.at(target, t);
+                if at.distance_squared(target) < foot * foot {
+                    assert!(reach.within_limit(target, t), "{target} at {t} s");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_designated_player_is_the_quickest_of_all_as_timing_everyone_finds() {
+        use crate::game::Match;
+        use crate::scenario::{PlayerEntry, Scenario};
+        let roles =
+            [Role::GK, Role::CB, Role::CB, Role::LB, Role::RB, Role::CM, Role::CM, Role::DM, Role::LM, Role::RM];
+        let team = |x: f32| {
+            roles.iter().map(|&r| PlayerEntry::new(r, x, 0.0)).chain([PlayerEntry::new(Role::CF, x, 0.0)]).collect()
+        };
+        let s = Scenario { left_team: team(-0.5), right_team: team(0.5), ..Scenario::default() };
+        let mut state = 0x9E37_79B9;
+        for round in 0..2_000 {
+            let mut m = Match::new(&s, 0, 0);
+            for p in &mut m.players {
+                p.position = Vec2::new(100.0 * uniform(&mut state) - 50.0, 64.0 * uniform(&mut state) - 32.0);
+                p.velocity = Vec2::new(16.0 * uniform(&mut state) - 8.0, 16.0 * uniform(&mut state) - 8.0);
+                if round % 3 == 0 {
+                    // Two players equally placed, now and then: the first of them wins.
+                    p.position = p.position.round();
+                    p.velocity = Vec2::ZERO;
+                }
+            }
+            let ball = Vec2::new(80.0 * uniform(&mut state) - 40.0, 50.0 * uniform(&mut state) - 25.0);
+            m.ball.position = ball.extend(0.11);
+            m.ball.velocity = Vec2::new(6.0 * uniform(&mut state) - 3.0, 0.0).extend(0.0);
+            // The ball at an opponent's feet, or slow and loose.
+            m.owner = (round % 2 == 0).then_some(11 + round % 11);
+            let path = super::LazyPath::new();
+            let everyone = super::fastest(&m, &path, &m.players[..11], 1..11);
+            assert_eq!(super::designated(&m, Side::Left, &path), everyone, "round {round}");
+        }
     }
 }

@@ -35,7 +35,7 @@ const SLOW_BALL: f32 = 5.0;
 fn time_to_ball(game: &Match, path: &LazyPath, p: &crate::player::Player) -> f32 {
     let reach = Reach::of(p);
     let ball = game.ball();
-    if game.owner().is_some() || ball.velocity.length_squared() < SLOW_BALL * SLOW_BALL {
+    if straight_to_ball(game) {
         return reach.time_to(ball.xy());
     }
     let path = path.get_or_init(|| game.paths.path(game.ball()));
@@ -48,6 +48,12 @@ fn time_to_ball(game: &Match, path: &LazyPath, p: &crate::player::Player) -> f32
         }
     }
     last.0 + reach.time_to(last.1)
+}
+
+/// Whether times to the ball are taken straight to where it is: someone has it at his feet, or it
+/// is slower than [`SLOW_BALL`].
+fn straight_to_ball(game: &Match) -> bool {
+    game.owner().is_some() || game.ball().velocity.length_squared() < SLOW_BALL * SLOW_BALL
 }
 
 /// Where a player can get to a ball, GRF 2.10's time needed for a distance: over the first
@@ -169,8 +175,7 @@ pub(crate) fn designated(game: &Match, side: Side, path: &LazyPath) -> Option<us
     }
     let any_outfield = (0..team.len()).any(|i| selectable(game, side, i));
     let eligible = |i: &usize| team[*i].active && team[*i].controllable && (!any_outfield || !team[*i].is_keeper());
-    let ball = game.ball();
-    if game.owner().is_some() || ball.velocity.length_squared() < SLOW_BALL * SLOW_BALL {
+    if straight_to_ball(game) {
         // Straight to the ball: each candidate's time is at least his lower bound, so taken in
         // order of their bounds, no one whose bound is past the best time so far can beat it (most
         // steps only the nearest two or three are timed; this runs every step a team is without
@@ -182,7 +187,7 @@ pub(crate) fn designated(game: &Match, side: Side, path: &LazyPath) -> Option<us
                 // More players than a team can have: time them all.
                 return fastest(game, path, team, (0..team.len()).filter(eligible));
             }
-            order[n] = (Reach::of(&team[i]).lower_bound(ball.xy()), i);
+            order[n] = (Reach::of(&team[i]).lower_bound(game.ball().xy()), i);
             n += 1;
         }
         let order = &mut order[..n];

@@ -63,18 +63,22 @@ class Band:
     ends: collections.Counter[str] = dataclasses.field(default_factory=collections.Counter)
 
 
-def band_of(obs: cases.Observation) -> str:
-    """The start band of a spell whose first step is `obs`: speed band and air or ground."""
+def band_of(obs: cases.Observation) -> tuple[float, bool]:
+    """The start band of a spell whose first step is `obs`: the lower edge of its speed band (m/s)
+    and whether the ball is in the air."""
     move = obs["ball_direction"]
     # ball_direction is the ball's movement per step (0.1 s): x and y in raw units, z in metres.
     speed = math.hypot(float(move[0]) * cases.METRES_X, float(move[1]) * cases.METRES_Y) * 10.0
     air = float(obs["ball"][2]) > AIR_HEIGHT or float(move[2]) * 10.0 > AIR_RISE
-    low = 0.0
-    for high in BANDS:
-        if speed < high:
-            return f"{low:g}-{high:g} m/s {'air' if air else 'ground'}"
-        low = high
-    return f"{low:g}+ m/s {'air' if air else 'ground'}"
+    return max((edge for edge in (0.0, *BANDS) if speed >= edge), default=0.0), air
+
+
+def label(band: tuple[float, bool]) -> str:
+    """A band as printed, e.g. `5-10 m/s air` or `20+ m/s ground`."""
+    low, air = band
+    higher = [edge for edge in BANDS if edge > low]
+    speeds = f"{low:g}-{higher[0]:g}" if higher else f"{low:g}+"
+    return f"{speeds} m/s {'air' if air else 'ground'}"
 
 
 def nearest(obs: cases.Observation) -> float:
@@ -87,10 +91,12 @@ def nearest(obs: cases.Observation) -> float:
     )
 
 
-def profile(scenario: str, matches: int, seed: int, steps: int) -> tuple[int, dict[str, Band]]:
+def profile(
+    scenario: str, matches: int, seed: int, steps: int
+) -> tuple[int, dict[tuple[float, bool], Band]]:
     """The normal-play steps and the spells by start band over `matches` matches."""
     normal = 0
-    bands: dict[str, Band] = collections.defaultdict(Band)
+    bands: dict[tuple[float, bool], Band] = collections.defaultdict(Band)
     for match in range(matches):
         spell: Band | None = None
         owner = -1
@@ -98,7 +104,9 @@ def profile(scenario: str, matches: int, seed: int, steps: int) -> tuple[int, di
             if int(obs["game_mode"]) != cases.NORMAL:
                 if spell is not None:
                     spell.ends["stop"] += 1
-                spell, owner = None, -1
+                # A restart's taker shows as the ball's owner: his team had it before the spell.
+                spell = None
+                owner = int(obs["ball_owned_team"]) if int(obs["ball_owned_team"]) != -1 else owner
                 continue
             normal += 1
             now = int(obs["ball_owned_team"])
@@ -127,10 +135,10 @@ def main() -> None:
     normal, bands = profile(args.scenario, args.matches, args.seed, args.steps)
     print(f"{args.scenario}, {args.matches} matches, {normal} normal-play steps")
     print(f"{'start':22} {'per 1000':>8} {'loose':>6} {'far':>6} {'steps':>6}  " + " ".join(ENDS))
-    for name in sorted(bands, key=lambda b: (float(b.split("-")[0].split("+")[0]), b)):
-        b = bands[name]
+    for band in sorted(bands):
+        b = bands[band]
         print(
-            f"{name:22} {1000 * b.spells / normal:8.2f} {b.loose_steps / normal:6.3f} "
+            f"{label(band):22} {1000 * b.spells / normal:8.2f} {b.loose_steps / normal:6.3f} "
             f"{b.far_steps / normal:6.3f} {b.loose_steps / b.spells:6.1f}  "
             + " ".join(f"{b.ends[e]:4d}" for e in ENDS)
         )

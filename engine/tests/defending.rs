@@ -293,3 +293,32 @@ fn a_keeper_runs_for_a_loose_ball_he_is_clearly_first_to_outside_his_area() {
     }
     assert!(nearest < 1.0, "their keeper came no nearer the ball than {nearest:.1} m");
 }
+
+#[test]
+fn a_keeper_who_decides_to_clear_first_time_clears_though_he_has_time_by_the_touch() {
+    // GRF's keeper picks his first-time clearance about a second from the ball, while the
+    // opponent chasing it is near enough to make him panic, and the kick animation then plays
+    // out. A pass runs at 6 m/s towards their keeper, who stands 6 m outside his area, with our
+    // forward 5 m behind it: deciding again on the last tick, when he is on the ball and the
+    // forward still about a second off, he stopped it instead.
+    let mut env = common::builtin_env("11_vs_11_stochastic", 1);
+    let game = env.game_mut();
+    for i in 1..11 {
+        game.place_player(Side::Right, i, glam::Vec2::new(-10.0, -30.0 + 6.0 * i as f32));
+        game.place_player(Side::Left, i, glam::Vec2::new(-30.0, -30.0 + 6.0 * i as f32));
+    }
+    game.place_player(Side::Left, 10, glam::Vec2::new(17.0, 0.0));
+    game.place_player(Side::Right, 0, glam::Vec2::new(30.0, 0.0));
+    game.place_ball(glam::Vec3::new(22.0, 0.0, 0.11), glam::Vec3::new(6.0, 0.0, 0.0), Some((Side::Left, 10)));
+    let mut struck = None;
+    for tick in 0..300 {
+        game.tick();
+        assert_ne!(game.owner(), Some((Side::Right, 0)), "tick {tick}: their keeper stopped the ball");
+        if game.last_touch() == Some((Side::Right, 0)) {
+            struck = Some(game.ball().velocity.length());
+            break;
+        }
+    }
+    let speed = struck.expect("their keeper never touched the ball");
+    assert!(speed > 15.0, "the clearance left at {speed:.1} m/s");
+}

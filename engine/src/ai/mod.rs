@@ -171,7 +171,16 @@ pub struct TeamAi {
     /// next decision).
     #[serde(default)]
     support: Option<support::Support>,
+    /// Per player: the first-time kick he committed to, the ball's last toucher then and the tick
+    /// ([`COMMIT_TICKS`]).
+    #[serde(default)]
+    committed: Vec<Option<(crate::game::Kick, Option<usize>, u64)>>,
 }
+
+/// How long (ticks) a player keeps a first-time kick he decided on while the ball comes to him:
+/// GRF's kick animation, once started, plays out to its touch (0.2-0.4 s in) whatever the
+/// possession amount then says, so the decision taken about a second from the ball stands.
+const COMMIT_TICKS: u64 = 50;
 
 impl TeamAi {
     /// The AI of `side` at difficulty `theta` for `players` players.
@@ -188,6 +197,7 @@ impl TeamAi {
             next_marking: 0,
             marking_owner: None,
             support: Some(support::Support::new(side, players)),
+            committed: vec![None; players],
         }
     }
 
@@ -257,6 +267,18 @@ impl TeamAi {
         }
         if let Some(m) = self.marks.iter().flatten().find(|&&m| m >= total) {
             return Err(format!("a {side} player marks player {m} of {total}"));
+        }
+        if !(self.committed.is_empty() || self.committed.len() == players) {
+            return Err(format!("the {side} AI's first-time kicks do not fit a team of {players}"));
+        }
+        let kick_fits = |(kick, touch, _): &(crate::game::Kick, Option<usize>, u64)| {
+            let aim = match kick.target {
+                crate::game::KickTarget::Point(v) | crate::game::KickTarget::Direction(v) => v,
+            };
+            aim.is_finite() && kick.power.is_finite() && kick.height.is_finite() && touch.is_none_or(|t| t < total)
+        };
+        if !self.committed.iter().flatten().all(kick_fits) {
+            return Err(format!("a {side} AI first-time kick is out of range"));
         }
         let thetas = std::iter::once(&self.difficulty).chain(self.player_difficulty.iter().flatten());
         if thetas.clone().any(|d| !(0.0..=1.0).contains(&d.theta) || !d.reaction_ticks.is_finite()) {
@@ -355,6 +377,20 @@ impl TeamAi {
             if view.mode == GameMode::Normal && p.active && !p.lazy {
                 plan.first_time = clearance::first_time(view, g, &analysis)
                     .or_else(|| ball_carrier::first_touch(view, g, &analysis, difficulty, rng));
+                if self.committed.len() != range.len() {
+                    self.committed = vec![None; range.len()];
+                }
+                let kept = self.committed[i].filter(|&(_, touch, since)| {
+                    view.owner.is_none() && view.last_touch == touch && view.tick < since + COMMIT_TICKS
+                });
+                match (plan.first_time, kept) {
+                    (None, Some((kick, _, _))) => plan.first_time = Some(kick),
+                    (Some(kick), None) => self.committed[i] = Some((kick, view.last_touch, view.tick)),
+                    (Some(_), Some(_)) => {}
+                    (None, None) => self.committed[i] = None,
+                }
+            } else if let Some(c) = self.committed.get_mut(i) {
+                *c = None;
             }
             self.plans[i] = plan;
         }

@@ -383,6 +383,8 @@ impl TeamAi {
                 let kept = self.committed[i].filter(|&(_, touch, since)| {
                     view.owner.is_none() && view.last_touch == touch && view.tick < since + COMMIT_TICKS
                 });
+                // A kick still kept overrides "none" now; a fresh decision is played as decided,
+                // its window counted from the first one.
                 match (plan.first_time, kept) {
                     (None, Some((kick, _, _))) => plan.first_time = Some(kick),
                     (Some(kick), None) => self.committed[i] = Some((kick, view.last_touch, view.tick)),

@@ -491,11 +491,11 @@ impl Match {
         if let Some(g) = self.owner {
             let p = &self.players[g];
             if p.pending_kick.is_some() {
-                // Winding up a kick he turns, and the ball stays where it lies, moving only with
-                // his run: GRF's kick animations place the body round
-                // the ball (measured in GRF 2.10, a pass played straight back leaves the ball
-                // still through the 400 ms of the turn), so a turn never swings the ball behind
-                // him into a chaser's path.
+                // Winding up a kick he turns, and the ball keeps its place beside him, moving
+                // only with his run: GRF's kick animations place the body round the ball
+                // (measured in GRF 2.10, a pass played straight back leaves the ball still
+                // through the 400 ms of the turn), so a turn never swings the ball behind him
+                // into a chaser's path.
                 self.ball.position += (p.velocity * TICK_SECONDS).extend(0.0);
                 self.ball.velocity = p.velocity.extend(0.0);
                 self.carry_distance = p.position.distance(self.ball.xy());

@@ -35,6 +35,9 @@ def test_defenders_are_split_at_the_carrier_and_timed_from_the_raw_observation()
     assert defending_profile.observe(observation(0.5), p)
     assert p.goal_side == [1]
     assert math.isclose(p.nearest[0], 0.1 * METRES_X)
+    # Both outfield defenders ranked by distance, the keeper left out: two 0.1 units off.
+    assert len(p.ranked) == 1 and len(p.ranked[0]) == 2
+    assert all(math.isclose(d, 0.1 * METRES_X) for d in p.ranked[0])
     assert p.behind_speed == [p.behind_run_back[0]]
     assert math.isclose(p.behind_run_back[0], 0.005 * METRES_X * 10.0)
     # Only the attacker off the ball counts (not the keeper, not the carrier): 10.9 m/s.
@@ -51,12 +54,21 @@ def test_defenders_are_split_at_the_carrier_and_timed_from_the_raw_observation()
     assert len(p.goal_side) == 1
 
 
+def test_the_median_of_an_even_count_is_the_mean_of_the_middle_two() -> None:
+    assert defending_profile.median([4.0, 1.0, 3.0, 2.0]) == 2.5
+    assert defending_profile.median([3.0, 1.0, 2.0]) == 2.0
+    assert math.isnan(defending_profile.median([]))
+
+
 def test_a_short_match_profiles_the_defence() -> None:
     p = defending_profile.profile("11_vs_11_easy_stochastic", 400, 1)
     # The θ = 1 side reaches the easy side's end within 40 s of play (46 steps counted at seed 1).
     assert p.goal_side and len(p.goal_side) == len(p.nearest)
     assert all(0 <= n <= 10 for n in p.goal_side)
     assert all(d > 0.0 for d in p.nearest)
+    # Ten outfield defenders ranked, at most the first six kept, nearest first.
+    assert all(len(r) == defending_profile.RANKED and r == sorted(r) for r in p.ranked)
+    assert [r[0] for r in p.ranked] == p.nearest
     assert len(p.behind_speed) == len(p.behind_run_back) == 10 * len(p.goal_side) - sum(p.goal_side)
     assert len(p.attacker_speed) == 9 * len(p.goal_side)
     assert 0.0 <= defending_profile.share(p.behind_speed, defending_profile.STANDING, False) <= 1.0

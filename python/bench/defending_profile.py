@@ -103,7 +103,8 @@ def observe(obs: Observation, into: DefendingProfile) -> bool:
             into.behind_run_back.append(float(step[0]) * cases.METRES_X * 10.0)
     distances.sort()
     into.goal_side.append(ahead)
-    into.nearest.append(distances[0])
+    # A side of a keeper alone (the empty-goal drills) has no outfield defender: none is near.
+    into.nearest.append(distances[0] if distances else math.inf)
     into.ranked.append(distances[:RANKED])
     for i, step in enumerate(obs["left_team_direction"]):
         if i != 0 and i != owner:

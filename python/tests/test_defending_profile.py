@@ -54,6 +54,15 @@ def test_defenders_are_split_at_the_carrier_and_timed_from_the_raw_observation()
     assert len(p.goal_side) == 1
 
 
+def test_a_side_of_a_keeper_alone_has_no_defender_near() -> None:
+    obs = observation(0.5)
+    obs["right_team"] = np.array([[0.9, 0.0]])
+    obs["right_team_direction"] = np.array([[0.0, 0.0]])
+    p = defending_profile.DefendingProfile()
+    assert defending_profile.observe(obs, p)
+    assert p.goal_side == [0] and p.nearest == [math.inf] and p.ranked == [[]]
+
+
 def test_the_median_of_an_even_count_is_the_mean_of_the_middle_two() -> None:
     assert defending_profile.median([4.0, 1.0, 3.0, 2.0]) == 2.5
     assert defending_profile.median([3.0, 1.0, 2.0]) == 2.0

@@ -27,7 +27,7 @@ use glam::Vec2;
 pub use difficulty::Difficulty;
 pub use prediction::{BallPath, SAMPLE_DT};
 
-use crate::game::{GameMode, Kick, PlayerInput};
+use crate::game::{GameMode, Kick, KickTarget, PlayerInput};
 use crate::geometry::{Side, TeamFrame};
 use crate::physics::Ball;
 use crate::player::Player;
@@ -174,7 +174,7 @@ pub struct TeamAi {
     /// Per player: the first-time kick he committed to, the ball's last toucher then and the tick
     /// ([`COMMIT_TICKS`]).
     #[serde(default)]
-    committed: Vec<Option<(crate::game::Kick, Option<usize>, u64)>>,
+    committed: Vec<Option<(Kick, Option<usize>, u64)>>,
 }
 
 /// How long (ticks) a player keeps a first-time kick he decided on while the ball comes to him:
@@ -271,9 +271,9 @@ impl TeamAi {
         if !(self.committed.is_empty() || self.committed.len() == players) {
             return Err(format!("the {side} AI's first-time kicks do not fit a team of {players}"));
         }
-        let kick_fits = |(kick, touch, _): &(crate::game::Kick, Option<usize>, u64)| {
+        let kick_fits = |(kick, touch, _): &(Kick, Option<usize>, u64)| {
             let aim = match kick.target {
-                crate::game::KickTarget::Point(v) | crate::game::KickTarget::Direction(v) => v,
+                KickTarget::Point(v) | KickTarget::Direction(v) => v,
             };
             aim.is_finite() && kick.power.is_finite() && kick.height.is_finite() && touch.is_none_or(|t| t < total)
         };

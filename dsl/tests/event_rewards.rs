@@ -79,14 +79,17 @@ fn the_checkpoint_example_pays_what_the_builtin_checkpoint_pays() {
     let set = a.action_set();
     let mut state = 0x2545_F491_4F6C_DD1Du64;
     let (mut paid, mut goals) = (0.0, 0);
-    for step in 0..8_000 {
+    for step in 0..40_000 {
+        if step >= 8_000 && goals > 0 {
+            break;
+        }
         state ^= state << 13;
         state ^= state >> 7;
         state ^= state << 17;
         // Mostly run right with the ball and shoot once near the goal, so that checkpoints and
         // goals happen (a shot from far out does not reach the goal, as in GRF). The chasing
-        // defenders play a loose ball first time (GRF's on-the-ball AI), so goals are rare and
-        // the loop runs 8,000 steps (4,000 gave none once they did).
+        // defenders play a loose ball first time (GRF's on-the-ball AI), so goals are rare: the
+        // loop runs at least 8,000 steps and on until a goal has been paid (up to 40,000).
         let near_goal = a.observations()[0].ball[0] > 0.75;
         let action = if state.is_multiple_of(8) {
             set.actions()[(state >> 8) as usize % set.len()]

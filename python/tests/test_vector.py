@@ -180,7 +180,7 @@ def test_record_episode_statistics_around_the_vector_env(mode: AutoresetMode) ->
     )
     envs.reset(seed=0)
     finished = 0
-    for _ in range(400):
+    for _ in range(1_000):
         _, _, _, _, infos = envs.step(envs.action_space.sample())
         assert infos["score"].shape == (2, 2)
         if "episode" in infos:

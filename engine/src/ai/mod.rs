@@ -175,12 +175,21 @@ pub struct TeamAi {
     /// ([`COMMIT_TICKS`]).
     #[serde(default)]
     committed: Vec<Option<(Kick, Option<usize>, u64)>>,
+    /// Per player: the tick of his last decision (`u64::MAX`: none yet), for [`TeamAi::due`].
+    #[serde(default)]
+    planned: Vec<u64>,
 }
 
 /// How long (ticks) a player keeps a first-time kick he decided on while the ball comes to him:
 /// GRF's kick animation, once started, plays out to its touch (0.2-0.4 s in) whatever the
 /// possession amount then says, so the decision taken about a second from the ball stands.
 const COMMIT_TICKS: u64 = 50;
+
+/// A player further than this (m) from the ball decides anew only every [`FAR_DECISION_TICKS`]
+/// ([`TeamAi::due`]; docs/grf-compatibility.md, "how often a player decides").
+const FAR_FROM_BALL: f32 = 10.0;
+/// How often (ticks) a player far from the ball decides anew: GRF's 240 ms.
+const FAR_DECISION_TICKS: u64 = 24;
 
 impl TeamAi {
     /// The AI of `side` at difficulty `theta` for `players` players.
@@ -198,6 +207,7 @@ impl TeamAi {
             marking_owner: None,
             support: Some(support::Support::new(side, players)),
             committed: vec![None; players],
+            planned: vec![u64::MAX; players],
         }
     }
 
@@ -268,6 +278,9 @@ impl TeamAi {
         if let Some(m) = self.marks.iter().flatten().find(|&&m| m >= total) {
             return Err(format!("a {side} player marks player {m} of {total}"));
         }
+        if !(self.planned.is_empty() || self.planned.len() == players) {
+            return Err(format!("the {side} AI's decision times do not fit a team of {players}"));
+        }
         if !(self.committed.is_empty() || self.committed.len() == players) {
             return Err(format!("the {side} AI's first-time kicks do not fit a team of {players}"));
         }
@@ -310,6 +323,33 @@ impl TeamAi {
         self.player_difficulty[index] = theta.map(Difficulty::new);
     }
 
+    /// Whether player `g`, who last decided at tick `planned` (`u64::MAX`: never), decides again at
+    /// this team decision or keeps his plan: GRF 2.10's re-decision cadence (its players re-queue a
+    /// command as their movement animation ends; measured in GRF 2.10.2 over
+    /// 11_vs_11_easy_stochastic's first 1,500 steps, its defence and midfield strategies re-decide a
+    /// median 40-50 ms apart within 5 m of the ball, 80 ms within 10 m and 240 ms beyond). A player
+    /// more than [`FAR_FROM_BALL`] off the ball decides every [`FAR_DECISION_TICKS`]; everyone
+    /// nearer, the man on the ball, the team's two quickest to it, the keeper, a marker (the
+    /// caller's test) and everyone at a set piece decide at every team decision, whose interval
+    /// (50-150 ms by θ) stands in for GRF's shorter ones near the ball (ported too, they made the
+    /// drills' duels worse).
+    fn due(view: &MatchView, g: usize, analysis: &Analysis, planned: u64) -> bool {
+        let p = &view.players[g];
+        if planned == u64::MAX
+            || view.mode != GameMode::Normal
+            || view.owner == Some(g)
+            || p.is_keeper()
+            || analysis.chaser.is_some_and(|(c, _, _)| c == g)
+            || analysis.second == Some(g)
+        {
+            return true;
+        }
+        let ball = view.ball.xy() + view.ball.velocity.truncate() * 0.1;
+        let near = (p.position + p.velocity * 0.1).distance(ball);
+        let every = if near < FAR_FROM_BALL { 0 } else { FAR_DECISION_TICKS };
+        view.tick >= planned.saturating_add(every)
+    }
+
     fn think(&mut self, view: &MatchView, rng: &mut MatchRng, native: &[bool]) {
         let side = self.side;
         let analysis = prediction::analyse(view, side, &self.difficulty);
@@ -333,11 +373,20 @@ impl TeamAi {
         }
         let support = self.support.get_or_insert_with(|| support::Support::new(side, range.len()));
         support.update(view, &analysis);
+        if self.planned.len() != range.len() {
+            // A state saved before decision times were kept: everyone decides now.
+            self.planned = vec![u64::MAX; range.len()];
+        }
         for g in range.clone() {
             let i = g - range.start;
             if native[i] {
                 continue;
             }
+            if self.marks[i].is_none() && !Self::due(view, g, &analysis, self.planned[i]) {
+                // Far from the ball: he keeps his plan (its one-off kick and slide already spent).
+                continue;
+            }
+            self.planned[i] = view.tick;
             let p = &view.players[g];
             let ball = view.ball.xy();
             let difficulty = self.player_difficulty.get(i).copied().flatten().unwrap_or(self.difficulty);
@@ -396,5 +445,84 @@ impl TeamAi {
             }
             self.plans[i] = plan;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::game::Match;
+    use crate::player::Role;
+    use crate::scenario::{PlayerEntry, Scenario};
+
+    /// A match in play at tick 100, the ball still at the centre spot; our keeper, two players
+    /// next to the ball, one 8 m off it and our centre forward 30 m off.
+    fn match_in_play() -> Match {
+        let s = Scenario {
+            left_team: vec![
+                PlayerEntry::new(Role::GK, -1.0, 0.0),
+                PlayerEntry::new(Role::CB, -0.5, 0.0),
+                PlayerEntry::new(Role::CM, -0.5, 0.1),
+                PlayerEntry::new(Role::LM, -0.5, 0.2),
+                PlayerEntry::new(Role::CF, -0.5, 0.3),
+            ],
+            right_team: vec![PlayerEntry::new(Role::GK, -1.0, 0.0)],
+            ..Scenario::default()
+        };
+        let mut m = Match::new(&s, 0, 0);
+        m.mode = GameMode::Normal;
+        m.owner = None;
+        m.in_play_ticks = 100;
+        m.ball.position = glam::Vec3::new(0.0, 0.0, 0.11);
+        m.ball.velocity = glam::Vec3::ZERO;
+        let at = [(-2.0, 0.0), (-2.0, 1.5), (-6.0, 5.0), (-30.0, 0.0)];
+        for (p, (x, y)) in m.players[1..5].iter_mut().zip(at) {
+            p.position = Vec2::new(x, y);
+            p.velocity = Vec2::ZERO;
+        }
+        m
+    }
+
+    fn view(m: &Match) -> MatchView<'_> {
+        MatchView {
+            players: &m.players,
+            ranges: &m.ranges,
+            ball: &m.ball,
+            owner: m.owner,
+            last_touch: m.last_touch,
+            mode: m.mode,
+            taker: m.taker,
+            set_piece_ticks: m.set_piece_ticks,
+            tick: m.in_play_ticks,
+            owner_ticks: m.owner_ticks,
+            offsides: m.offsides,
+            agent_driven: &m.agent_driven,
+            paths: &m.paths,
+        }
+    }
+
+    #[test]
+    fn a_player_far_from_the_ball_decides_every_240_ms_and_one_near_it_at_every_decision() {
+        let mut m = match_in_play();
+        let v = view(&m);
+        let analysis = prediction::analyse(&v, Side::Left, &Difficulty::new(1.0));
+        let (keeper, near, forward) = (0, 3, 4);
+        assert!(v.players[near].position.distance(v.ball.xy()) < FAR_FROM_BALL);
+        assert!(v.players[forward].position.distance(v.ball.xy()) > FAR_FROM_BALL);
+        assert!(analysis.chaser.is_some_and(|(c, _, _)| c != near && c != forward));
+        assert!(analysis.second.is_some_and(|s| s != near && s != forward));
+        // Never decided: now.
+        assert!(TeamAi::due(&v, forward, &analysis, u64::MAX));
+        // Decided 10 ms ago: the forward keeps his plan for 240 ms, the others decide again.
+        assert!(!TeamAi::due(&v, forward, &analysis, 99));
+        assert!(!TeamAi::due(&v, forward, &analysis, 100 - FAR_DECISION_TICKS + 1));
+        assert!(TeamAi::due(&v, forward, &analysis, 100 - FAR_DECISION_TICKS));
+        for g in [keeper, near, analysis.second.unwrap_or(0)] {
+            assert!(TeamAi::due(&v, g, &analysis, 99), "player {g}");
+        }
+        // At a set piece everyone decides at every decision.
+        m.mode = GameMode::FreeKick;
+        let v = view(&m);
+        assert!(TeamAi::due(&v, forward, &analysis, 99));
     }
 }

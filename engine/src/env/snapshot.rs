@@ -83,8 +83,9 @@ impl Snapshot {
     /// asked for at a loose ball is queued like a shot); version 14 the tick of the last touch of
     /// the ball (a player's body blocks a fast ball only just after an opponent's touch); version
     /// 15 the magnet's last answer and its tick, and the team-mate each pass event is meant for;
-    /// version 16 the magnet's answer for each team, with how hard it pulls.
-    pub const FORMAT_VERSION: u16 = 16;
+    /// version 16 the magnet's answer for each team, with how hard it pulls; version 17 the tick of
+    /// each AI player's last decision (a player far from the ball decides less often).
+    pub const FORMAT_VERSION: u16 = 17;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {

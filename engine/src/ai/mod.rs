@@ -216,8 +216,8 @@ impl TeamAi {
         &self.difficulty
     }
 
-    /// Re-plans when the reaction time has passed, then writes this tick's inputs for the team's
-    /// players that no agent drives. `inputs`, `agent_driven` and `native` are the team's slices;
+    /// Re-plans when the reaction time has passed (a player far from the ball only every 240 ms:
+    /// [`TeamAi::due`]), then writes this tick's inputs for the team's players that no agent drives. `inputs`, `agent_driven` and `native` are the team's slices;
     /// players marked `native` are driven by their behaviours (`crate::behaviour`): the AI
     /// neither plans for them nor writes their inputs.
     pub(crate) fn drive(

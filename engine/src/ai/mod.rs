@@ -217,7 +217,8 @@ impl TeamAi {
     }
 
     /// Re-plans when the reaction time has passed (a player far from the ball only every 240 ms:
-    /// [`TeamAi::due`]), then writes this tick's inputs for the team's players that no agent drives. `inputs`, `agent_driven` and `native` are the team's slices;
+    /// [`TeamAi::due`]), then writes this tick's inputs for the team's players that no agent
+    /// drives. `inputs`, `agent_driven` and `native` are the team's slices;
     /// players marked `native` are driven by their behaviours (`crate::behaviour`): the AI
     /// neither plans for them nor writes their inputs.
     pub(crate) fn drive(
@@ -329,13 +330,14 @@ impl TeamAi {
     /// 11_vs_11_easy_stochastic's first 1,500 steps, its defence and midfield strategies re-decide a
     /// median 40-50 ms apart within 5 m of the ball, 80 ms within 10 m and 240 ms beyond). A player
     /// more than [`FAR_FROM_BALL`] off the ball decides every [`FAR_DECISION_TICKS`]; everyone
-    /// nearer, the man on the ball, the team's two quickest to it, the keeper, a marker (the
-    /// caller's test) and everyone at a set piece decide at every team decision, whose interval
+    /// nearer, the man on the ball, the team's two quickest to it, the keeper, a man marker
+    /// (`marking`) and everyone at a set piece decide at every team decision, whose interval
     /// (50-150 ms by θ) stands in for GRF's shorter ones near the ball (ported too, they made the
     /// drills' duels worse).
-    fn due(view: &MatchView, g: usize, analysis: &Analysis, planned: u64) -> bool {
+    fn due(view: &MatchView, g: usize, analysis: &Analysis, marking: bool, planned: u64) -> bool {
         let p = &view.players[g];
         if planned == u64::MAX
+            || marking
             || view.mode != GameMode::Normal
             || view.owner == Some(g)
             || p.is_keeper()
@@ -382,7 +384,7 @@ impl TeamAi {
             if native[i] {
                 continue;
             }
-            if self.marks[i].is_none() && !Self::due(view, g, &analysis, self.planned[i]) {
+            if !Self::due(view, g, &analysis, self.marks[i].is_some(), self.planned[i]) {
                 // Far from the ball: he keeps his plan (its one-off kick and slide already spent).
                 continue;
             }
@@ -512,17 +514,19 @@ mod tests {
         assert!(analysis.chaser.is_some_and(|(c, _, _)| c != near && c != forward));
         assert!(analysis.second.is_some_and(|s| s != near && s != forward));
         // Never decided: now.
-        assert!(TeamAi::due(&v, forward, &analysis, u64::MAX));
+        assert!(TeamAi::due(&v, forward, &analysis, false, u64::MAX));
         // Decided 10 ms ago: the forward keeps his plan for 240 ms, the others decide again.
-        assert!(!TeamAi::due(&v, forward, &analysis, 99));
-        assert!(!TeamAi::due(&v, forward, &analysis, 100 - FAR_DECISION_TICKS + 1));
-        assert!(TeamAi::due(&v, forward, &analysis, 100 - FAR_DECISION_TICKS));
+        assert!(!TeamAi::due(&v, forward, &analysis, false, 99));
+        assert!(!TeamAi::due(&v, forward, &analysis, false, 100 - FAR_DECISION_TICKS + 1));
+        assert!(TeamAi::due(&v, forward, &analysis, false, 100 - FAR_DECISION_TICKS));
         for g in [keeper, near, analysis.second.unwrap_or(0)] {
-            assert!(TeamAi::due(&v, g, &analysis, 99), "player {g}");
+            assert!(TeamAi::due(&v, g, &analysis, false, 99), "player {g}");
         }
+        // A man marker decides at every decision, wherever he is.
+        assert!(TeamAi::due(&v, forward, &analysis, true, 99));
         // At a set piece everyone decides at every decision.
         m.mode = GameMode::FreeKick;
         let v = view(&m);
-        assert!(TeamAi::due(&v, forward, &analysis, 99));
+        assert!(TeamAi::due(&v, forward, &analysis, false, 99));
     }
 }

@@ -25,19 +25,41 @@ pub(crate) fn close_down(p: &Player, carrier: &Player, ball: Vec2) -> (Vec2, boo
         let off = p.position.distance(carrier.position).clamp(GUARD_MIN, GUARD_MAX);
         return (carrier.position + to_goal * off, false);
     }
-    (go_for_ball(p, carrier, ball, own_goal), true)
+    (go_for_ball(p, carrier, ball), true)
 }
 
-/// Where a presser who is not yet goal-side runs: a little ahead of the carrier and goal-side,
-/// then, within 2.5 m, at the ball itself in front of him.
-fn go_for_ball(p: &Player, carrier: &Player, ball: Vec2, own_goal: Vec2) -> Vec2 {
+/// Where a presser who is not yet goal-side runs: within 2.5 m of the carrier, at the ball on the
+/// far side of it from him; further off, to where he meets the ball if it goes on with the
+/// carrier's run ([`meeting_point`]). GRF's hunter moves with its to-ball movement in haste, which
+/// rates each point of the ball's predicted path by how soon he can be there and takes the
+/// soonest (docs/grf-compatibility.md#team-ai, "the hunter runs at the ball"). Aimed goal-side of
+/// the carrier instead, touchline's hunter racing back in academy_counterattack_hard met the idle
+/// carrier's shoulder on the side away from the ball and stayed there.
+fn go_for_ball(p: &Player, carrier: &Player, ball: Vec2) -> Vec2 {
     if p.position.distance(carrier.position) < 2.5 {
         // At the ball, on the far side of it from the carrier: GRF's to-ball movement, which
         // comes round a carrier from behind.
         ball + (ball - carrier.position).normalize_or_zero() * 0.3
     } else {
-        carrier.position + carrier.velocity * 0.3 + (own_goal - carrier.position).normalize_or_zero() * 0.6
+        meeting_point(p.position, p.max_speed, ball, carrier.velocity)
     }
+}
+
+/// Longest look ahead (s) along a carried ball's run for a meeting point: GRF's ball prediction
+/// reaches 2 s.
+const MEETING_HORIZON: f32 = 2.0;
+
+/// Where a player at `at` running at `speed` (m/s) first meets a ball at `ball` moving on at
+/// `velocity` (m/s): the soonest t with |ball + velocity·t − at| = speed·t, no later than
+/// [`MEETING_HORIZON`]; a ball as quick as he is he chases to that horizon.
+fn meeting_point(at: Vec2, speed: f32, ball: Vec2, velocity: Vec2) -> Vec2 {
+    let offset = ball - at;
+    // speed²t² = |offset + velocity·t|²  →  a·t² − 2b·t − c = 0 with a, c ≥ 0.
+    let a = speed * speed - velocity.length_squared();
+    let b = offset.dot(velocity);
+    let c = offset.length_squared();
+    let t = if a > 1e-3 { (b + (b * b + a * c).sqrt()) / a } else { MEETING_HORIZON };
+    ball + velocity * t.min(MEETING_HORIZON)
 }
 
 /// Nearest (m) a goal-side presser holds off a carrier he waits for: where GRF's hunter, straight
@@ -78,9 +100,7 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Diffic
         Some(_) if marking => None,
         Some(o) if view.players[o].side != p.side => {
             if hunts(view, g, o, difficulty) {
-                let c = &view.players[o];
-                let own_goal = Vec2::new(-p.side.attack_sign() * HALF_LENGTH, 0.0);
-                let target = go_for_ball(p, c, ball, own_goal);
+                let target = go_for_ball(p, &view.players[o], ball);
                 return Some(Plan { run_through: true, ..Plan::go(target, p.max_speed, ball - p.position) });
             }
             cover(view, g, analysis, difficulty)
@@ -164,6 +184,23 @@ mod tests {
     use super::*;
     use crate::geometry::Side;
     use crate::player::Role;
+
+    #[test]
+    fn a_hunter_runs_to_where_he_meets_the_ball_on_the_carriers_run() {
+        // A ball at rest: at it.
+        let at = Vec2::new(-10.0, 0.0);
+        assert_eq!(meeting_point(at, 7.0, Vec2::ZERO, Vec2::ZERO), Vec2::ZERO);
+        // Carried straight away from him at 4 m/s from 6 m off: he gains 3 m/s, meets it in 2 s.
+        let away = meeting_point(Vec2::new(-6.0, 0.0), 7.0, Vec2::ZERO, Vec2::new(4.0, 0.0));
+        assert!(away.distance(Vec2::new(8.0, 0.0)) < 1e-4, "{away}");
+        // Carried across him 10 m off: ahead of the carrier, where his run and the ball's meet.
+        let across = meeting_point(Vec2::new(0.0, -10.0), 7.0, Vec2::ZERO, Vec2::new(4.0, 0.0));
+        let t = across.x / 4.0;
+        assert!(t > 0.0 && (across.distance(Vec2::new(0.0, -10.0)) - 7.0 * t).abs() < 1e-3, "{across}");
+        // A ball as quick as he is: chased to the 2 s horizon.
+        let quick = meeting_point(Vec2::new(-6.0, 0.0), 7.0, Vec2::ZERO, Vec2::new(7.0, 0.0));
+        assert_eq!(quick, Vec2::new(14.0, 0.0));
+    }
 
     #[test]
     fn a_defender_straight_goal_side_of_the_carrier_waits_unless_he_is_close() {

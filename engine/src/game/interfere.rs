@@ -1,5 +1,6 @@
 //! The standing tackle (GRF's interfere): when a challenger starts one, how fast he goes in while
-//! he winds it up, and how near the ball must be when its touch lands.
+//! he winds it up, how near the ball must be when its touch lands, and how long it goes on after
+//! a touch that knocks the ball loose.
 //!
 //! GRF picks an interfere animation only if the animation's touch would meet the ball, with the
 //! body carried by the animation's own movement (docs/grf-compatibility.md, "a defender against an
@@ -21,6 +22,17 @@ pub(super) const PACE: f32 = 3.7;
 pub(super) const REACH: f32 = 1.3;
 /// Ticks from the start to the touch, drawn uniformly (GRF: 150-250 ms).
 pub(super) const WIND_UP_TICKS: (u16, u16) = (15, 25);
+/// Ticks the tackle goes on after a touch that knocks the ball loose, drawn uniformly: GRF's
+/// interfere animations last another 170-340 ms after their touch (traced in GRF 2.10.2,
+/// docs/grf-compatibility.md, "a defender against an idle carrier"), and until they end the
+/// tackler cannot play the ball he knocked. Free at once, touchline's tackler trapped his own
+/// knock on the next tick, so every knock was a won ball.
+pub(super) const FOLLOW_THROUGH_TICKS: (u16, u16) = (17, 34);
+
+/// A duration in ticks drawn uniformly from `(shortest, longest)` with `unit` in [0, 1).
+pub(super) fn draw_ticks((shortest, longest): (u16, u16), unit: f32) -> u16 {
+    shortest + (unit * f32::from(longest - shortest + 1)) as u16
+}
 
 /// Whether a challenger at `at` (m) running at `velocity` (m/s) starts a standing tackle on a
 /// ball at `ball` moving at `ball_velocity`: whether, by the earliest touch, his run slowed to
@@ -82,6 +94,35 @@ mod tests {
         walking.settle_possession();
         assert_eq!(walking.players[1].interfere_ticks, 0, "the walker does not yet");
         assert_eq!(walking.owner, Some(0));
+    }
+
+    #[test]
+    fn a_knocked_ball_is_not_the_tacklers_until_his_tackle_has_run_its_course() {
+        // Walking in from 1.2 m, his touch lands with the ball nearer the carrier than him: a knock.
+        let mut m = challenge(Vec2::new(1.2, 0.0), Vec2::new(-1.0, 0.0));
+        m.players[1].interfere_ticks = 1;
+        m.settle_possession();
+        assert_eq!(m.owner, None, "the ball is knocked loose");
+        assert_eq!(m.last_touch, Some(1));
+        let (shortest, longest) = FOLLOW_THROUGH_TICKS;
+        let left = m.players[1].touch_cooldown;
+        assert!((shortest..=longest).contains(&left), "{left} ticks");
+        // Even lying still at his feet, with the carrier out of it, the ball stays loose.
+        m.players[0].touch_cooldown = 100;
+        m.ball.position = (m.players[1].possession_point()).extend(0.11);
+        m.ball.velocity = Vec3::ZERO;
+        m.settle_possession();
+        assert_eq!(m.owner, None);
+        m.players[1].touch_cooldown = 0;
+        m.settle_possession();
+        assert_eq!(m.owner, Some(1), "his tackle over, he takes it");
+    }
+
+    #[test]
+    fn follow_through_and_wind_up_draws_cover_their_whole_range() {
+        assert_eq!(draw_ticks(FOLLOW_THROUGH_TICKS, 0.0), FOLLOW_THROUGH_TICKS.0);
+        assert_eq!(draw_ticks(FOLLOW_THROUGH_TICKS, 0.999_999), FOLLOW_THROUGH_TICKS.1);
+        assert_eq!(draw_ticks(WIND_UP_TICKS, 0.5), 20);
     }
 
     #[test]

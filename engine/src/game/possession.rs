@@ -141,8 +141,7 @@ impl Match {
                 0 if starts => {
                     // GRF's standing tackle (its interfere): started when its touch would meet
                     // the ball, which lands 150-250 ms later.
-                    let (shortest, longest) = interfere::WIND_UP_TICKS;
-                    let wind_up = shortest + (self.rng.unit() * (longest - shortest + 1) as f32) as u16;
+                    let wind_up = interfere::draw_ticks(interfere::WIND_UP_TICKS, self.rng.unit());
                     self.players[q].interfere_ticks = wind_up;
                 }
                 1 if in_reach => {
@@ -206,7 +205,8 @@ impl Match {
     /// `q` knocked the ball off `owner` (a standing challenge or a slide): GRF's interfere touch
     /// pokes it on at half the tackler's pace plus 4 m/s away from him (6 m/s from a slide), and
     /// lifts it 0.5–1.5 m/s off the grass in a stochastic match. Where it goes is open: often to
-    /// the tackler's team, sometimes back to the carrier's.
+    /// the tackler's team, sometimes back to the carrier's; a standing tackler himself cannot
+    /// play it until his tackle ends ([`interfere::FOLLOW_THROUGH_TICKS`]).
     fn tackled(&mut self, owner: usize, q: usize) {
         let ball = self.ball.xy();
         let tackler = &self.players[q];
@@ -222,6 +222,9 @@ impl Match {
             // Brought down or beaten by the slide; a standing tackle's knock leaves the carrier
             // free to play the ball again at once (GRF's interfere).
             self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
+        } else {
+            // The tackle's animation goes on: he cannot play the ball he knocked until it ends.
+            self.players[q].touch_cooldown = interfere::draw_ticks(interfere::FOLLOW_THROUGH_TICKS, self.rng.unit());
         }
         self.touched(q);
     }

@@ -3,7 +3,8 @@
 //! out at a carrier; in his own area he takes a dribbled ball with his hands, nobody may challenge
 //! him while he holds it, and, alone, he clears it the way he faces; two bodies on one spot part
 //! instead of drifting along together; a keeper meets a contested loose ball with a first-time
-//! clearance; an agent walking away from the ball takes it with him.
+//! clearance; an agent walking away from the ball takes it with him; a defender racing back at an
+//! idle carrier takes the ball as soon as GRF's does.
 
 mod common;
 
@@ -321,4 +322,31 @@ fn a_keeper_who_decides_to_clear_first_time_clears_though_he_has_time_by_the_tou
     }
     let speed = struck.expect("their keeper never touched the ball");
     assert!(speed > 15.0, "the clearance left at {speed:.1} m/s");
+}
+
+/// The step at which an idle episode of `scenario` with engine seed `seed` ends, and whether it
+/// ends with the opponents on the ball.
+fn idle_episode_end(scenario: &str, seed: u64) -> (usize, bool) {
+    let mut env = common::env(scenario, seed);
+    for step in 1..=401 {
+        let out = env.step(&[Action::Idle]).unwrap();
+        if out.terminated || out.truncated {
+            let theirs = env.game().observed_owner().is_some_and(|(side, _)| side == Side::Right);
+            return (step, theirs);
+        }
+    }
+    (401, false)
+}
+
+#[test]
+fn a_defender_racing_back_takes_the_ball_off_an_idle_carrier_as_grfs_does() {
+    // academy_counterattack_hard: our idle carrier has the ball; a defender races back at him.
+    // GRF: every idle episode ends on a lost ball, after 53.9 steps on average (± 1.9). The
+    // hunter runs at the ball, not goal-side of the carrier, and his knock is not his until his
+    // tackle ends; aimed goal-side, touchline's hunter met the carrier's shoulder away from the
+    // ball and the episodes ran to about 63 steps.
+    let ends: Vec<(usize, bool)> = (0..8).map(|seed| idle_episode_end("academy_counterattack_hard", seed)).collect();
+    assert!(ends.iter().all(|&(_, theirs)| theirs), "every episode ends on a lost ball: {ends:?}");
+    let mean = ends.iter().map(|&(step, _)| step as f32).sum::<f32>() / ends.len() as f32;
+    assert!(mean < 60.0, "ended after {mean:.1} steps on average: {ends:?}");
 }

@@ -93,7 +93,9 @@ fn dribble_to_then_shoot_shoots() {
 fn pass_to_reaches_the_team_mate() {
     let passer =
         with(PlayerEntry::new(Role::CM, 0.0, 0.0), vec![stage(Behaviour::PassTo { player: 2, kind: PassKind::Short })]);
-    let receiver = with(PlayerEntry::new(Role::CF, 0.25, 0.15), vec![stage(Behaviour::Idle)]);
+    // The receiver plays for the ball as the built-in AI does: GRF's pass over 18 m leaves at
+    // 22 m/s, too fast for a man standing still to trap.
+    let receiver = with(PlayerEntry::new(Role::CF, 0.25, 0.15), vec![stage(Behaviour::Builtin { difficulty: None })]);
     let decoy = with(PlayerEntry::new(Role::LM, 0.1, -0.3), vec![stage(Behaviour::Idle)]);
     let s = Scenario {
         deterministic: true,

@@ -171,8 +171,13 @@ fn single_agent_control_goes_to_the_keeper_only_with_a_pass_meant_for_him() {
             switches += 1;
         }
         last = o.active;
-        if o.ball_owned_team == 0 && o.ball_owned_player != 0 {
-            assert_eq!(o.active, o.ball_owned_player, "control goes to our ball carrier");
+        // The carrier the engine gave the ball to. (The observation also names as owner the last
+        // toucher while the loose ball is at his feet, GRF's possession test; control may stay
+        // with the team-mate quickest to it until someone takes it.)
+        if let Some((Side::Left, carrier)) = env.game().owner()
+            && carrier != 0
+        {
+            assert_eq!(o.active as usize, carrier, "control goes to our ball carrier");
         }
         if out.truncated {
             break;

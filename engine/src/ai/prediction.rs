@@ -7,7 +7,7 @@ use glam::{Vec2, Vec3, Vec4};
 use super::{Analysis, Difficulty, MatchView};
 use crate::geometry::pitch::{BALL_RADIUS, GRAVITY};
 use crate::geometry::{Side, TeamFrame};
-use crate::physics::{BALL_DRAG, BOUNCE_RESTITUTION, Ball, rolled_speed};
+use crate::physics::{BALL_DRAG, BOUNCE_RESTITUTION, Ball, bounce_keep, rolled_speed};
 
 /// Number of predicted samples.
 pub const SAMPLES: usize = 20;
@@ -111,6 +111,9 @@ impl BallPath {
                 p += v * dt;
                 if p.z < BALL_RADIUS {
                     p.z = BALL_RADIUS;
+                    let keep = bounce_keep(-v.z);
+                    v.x *= keep;
+                    v.y *= keep;
                     v.z = if -v.z * BOUNCE_RESTITUTION < 0.8 { 0.0 } else { -v.z * BOUNCE_RESTITUTION };
                 }
             }

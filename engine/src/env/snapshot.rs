@@ -84,8 +84,10 @@ impl Snapshot {
     /// the ball (a player's body blocks a fast ball only just after an opponent's touch); version
     /// 15 the magnet's last answer and its tick, and the team-mate each pass event is meant for;
     /// version 16 the magnet's answer for each team, with how hard it pulls; version 17 the tick of
-    /// each AI player's last decision (a player far from the ball decides less often).
-    pub const FORMAT_VERSION: u16 = 17;
+    /// each AI player's last decision (a player far from the ball decides less often); version 18
+    /// each player's facing when he asked for the kick he winds up (a pass played round from a
+    /// stand is the weaker).
+    pub const FORMAT_VERSION: u16 = 18;
 
     /// Name of the scenario the snapshot was taken on.
     pub fn scenario(&self) -> &str {

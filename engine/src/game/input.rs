@@ -9,7 +9,8 @@ use glam::Vec2;
 pub enum KickKind {
     /// Ground pass to a team-mate.
     ShortPass,
-    /// Driven, low lofted pass played ahead of the receiver.
+    /// Long pass: GRF's long pass, struck as a ground pass is but to a point led a fifth of its
+    /// length forward of the receiver; the touch's cap makes a long one bounce.
     LongPass,
     /// High lofted pass.
     HighPass,

@@ -5,26 +5,11 @@
 use glam::{Vec2, Vec3};
 
 use super::input::{Kick, KickKind};
+use super::touch::{self, PassMotion};
 use crate::geometry::pitch::{BALL_RADIUS, GOAL_HALF_WIDTH, GRAVITY, HALF_LENGTH};
-use crate::physics::{BALL_DRAG, Ball};
+use crate::physics::Ball;
 use crate::player::{DRIBBLE_SPEED, Player, SPRINT_SPEED};
 use crate::rng::MatchRng;
-
-/// Fastest a pass leaves the foot (m/s): GRF's best possible touch, 30 m/s scaled by the kicking
-/// animation, measured at 15-17 m/s (a 50 m pass back to the keeper).
-const PASS_TOUCH_SPEED: f32 = 16.5;
-/// Most lift (m/s) a pass gets from the pace the touch takes off it. Measured in GRF 2.10.2
-/// (academy_run_to_score, a short or a long pass pressed at env step 8 or 15, back to the keeper
-/// 52 m away): it leaves at 17 m/s and peaks 0.7 m above its start, about 3.8 m/s up, of which
-/// the pass's own 0.11 per unit of pace gives 1.9.
-const MAX_TOUCH_LIFT: f32 = 2.0;
-
-/// Launch speed for a lofted ball at elevation (cos, sin) whose first bounce is `carry` m away,
-/// with a margin for air drag.
-fn lofted_speed(carry: f32, cos: f32, sin: f32) -> f32 {
-    let vacuum = (GRAVITY * carry / (2.0 * sin * cos)).sqrt();
-    vacuum * (1.0 + BALL_DRAG * 0.9 * vacuum * sin)
-}
 
 /// The signed angle (rad, in [-π, π]) from `from` to `to`, counter-clockwise positive; through
 /// libm, so that it is the same on every platform.
@@ -48,8 +33,18 @@ fn rotate_small(v: Vec2, a: f32) -> Vec2 {
 }
 
 /// Sets the ball's velocity for `kick` taken by `kicker`. `accuracy` in [0, 1] scales aim error
-/// (1 = the best player at difficulty 1). `target` is the resolved aim point (m).
-pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2, accuracy: f32, rng: &mut MatchRng) {
+/// (1 = the best player at difficulty 1). `target` is the resolved aim point (m). A pass is
+/// played with the kicking motion its turn from the kicker's body calls for, or, `throw_in`,
+/// with a throw's (`touch::PassMotion`).
+pub(crate) fn launch(
+    ball: &mut Ball,
+    kicker: &Player,
+    kick: &Kick,
+    target: Vec2,
+    accuracy: f32,
+    throw_in: bool,
+    rng: &mut MatchRng,
+) {
     let from = ball.xy();
     let to = target - from;
     let distance = to.length().max(0.5);
@@ -58,49 +53,41 @@ pub(crate) fn launch(ball: &mut Ball, kicker: &Player, kick: &Kick, target: Vec2
     let error = 0.015 + 0.04 * (1.0 - accuracy) + 0.06 * (1.0 - accuracy) * (1.0 - accuracy);
     let dir = rotate_small(dir, rng.noise(error * 1.7).clamp(-0.19, 0.19));
     let velocity = match kick.kind {
-        KickKind::ShortPass => {
+        KickKind::ShortPass | KickKind::LongPass => {
+            // GRF's auto pass asks the same of a short and a long pass (the long one's target is
+            // led forward, `pass_choice`): its pace, with 0.11 m/s of rise per m/s of it. The
+            // touch caps it, and a long ground pass is a bouncing one.
             let wanted = pass_pace(distance) * (1.0 + rng.noise(0.05 * (1.0 - accuracy) + 0.01));
-            // GRF's best possible touch: a pass leaves the foot at most PASS_TOUCH_SPEED; a
-            // quarter of the pace it lacks (up to MAX_TOUCH_LIFT) goes into lift, on top of the
-            // pass's own rise of 0.11 per unit of pace. A long ground pass is a bouncing one.
-            let speed = wanted.min(PASS_TOUCH_SPEED);
-            let lift = 0.11 * speed + (0.25 * (wanted - speed)).min(MAX_TOUCH_LIFT);
-            (dir * speed).extend(lift)
-        }
-        KickKind::LongPass => {
-            // Driven pass: 14° elevation, first bounce at about 70 % of the way.
-            let (c, s) = (0.970_295_7, 0.241_921_9);
-            let speed = lofted_speed(distance * 0.7, c, s).min(30.0);
-            Vec3::new(dir.x * c * speed, dir.y * c * speed, s * speed)
+            (dir * wanted).extend(0.11 * wanted)
         }
         KickKind::HighPass => high_pass_velocity(dir, distance),
         KickKind::Shot => shot_velocity(kicker, dir, distance, kick, accuracy, rng),
+    };
+    let velocity = if kick.kind == KickKind::Shot {
+        velocity
+    } else {
+        // The pass as the kicking motion plays it: how far round from the body the ball goes.
+        let run = kicker.kick_run.length();
+        let body = if run >= STANDING_RUN { kicker.kick_run / run } else { kicker.kick_facing };
+        let motion = if throw_in { PassMotion::THROW } else { PassMotion::new(kick.kind, touch::turn(body, dir), run) };
+        motion.touch(kick.kind, velocity, ball.velocity.length(), accuracy, rng)
     };
     ball.velocity = velocity;
     ball.position.z = ball.position.z.max(BALL_RADIUS);
     ball.spin = Vec3::ZERO;
 }
 
-/// Fastest a high pass leaves the foot (m/s): GRF's best possible touch caps the kick at the
-/// animation's and player's power and lifts it by a quarter of what it lacks. Measured in GRF 2.10.2
-/// (academy_run_to_score, random agent): a high pass back to the keeper 52 m away leaves at about
-/// 30.5 m/s across the ground and 12.3 m/s up, |v| ≈ 33 m/s.
-const HIGH_PASS_TOUCH_SPEED: f32 = 33.0;
-
-/// GRF's high pass to a point `distance` m away along `dir` (GRF 2.10's auto pass and touch,
-/// docs/grf-compatibility.md#action-effects): with x = min(distance / 60 m, 1), power 1.15·x^1.4
-/// and a lift of 0.45 − 0.15·x per unit of direction; the ball leaves at 36·(power + 0.3) m/s along that
-/// direction, capped at [`HIGH_PASS_TOUCH_SPEED`] with a quarter of the excess going up. A long
-/// one flies well beyond its target: GRF's high pass back to a keeper 52 m away lands behind his
-/// goal.
+/// The velocity GRF's auto pass asks of a high pass to a point `distance` m away along `dir`
+/// (GRF 2.10's auto pass, docs/grf-compatibility.md#action-effects), before the touch caps it
+/// (`touch::PassMotion`): with x = min(distance / 60 m, 1), power 1.15·x^1.4 and a lift of
+/// 0.45 − 0.15·x per unit of direction, 36·(power + 0.3) m/s along that direction. Measured in
+/// GRF 2.10.2 (academy_run_to_score, random agent): the high pass back to the keeper 52 m away,
+/// capped at 33 m/s by the turn right round, leaves at about 30.5 m/s across the ground and
+/// 12.3 m/s up, and lands behind his goal.
 fn high_pass_velocity(dir: Vec2, distance: f32) -> Vec3 {
     let x = (distance / 60.0).clamp(0.0, 1.0);
     let power = 1.15 * libm::powf(x, 1.4);
-    let wanted = 36.0 * (power + 0.3);
-    let speed = wanted.min(HIGH_PASS_TOUCH_SPEED);
-    let mut velocity = Vec3::new(dir.x, dir.y, 0.45 - 0.15 * x).normalize() * speed;
-    velocity.z += 0.25 * (wanted - speed);
-    velocity
+    Vec3::new(dir.x, dir.y, 0.45 - 0.15 * x).normalize() * (36.0 * (power + 0.3))
 }
 
 /// GRF's `curve`: blends `x` in [0, 1] with a sine ease (flat at both ends) by `bias`.
@@ -261,7 +248,10 @@ mod tests {
     fn a_long_high_pass_leaves_as_grfs_does_and_a_short_one_softer() {
         // GRF 2.10.2, academy_run_to_score: the high pass back to the keeper 52 m away leaves at
         // about 30.5 m/s across the ground and 12.3 m/s up.
-        let v = high_pass_velocity(Vec2::NEG_X, 52.0);
+        // He stands facing upfield: the turn right round caps it at 33 m/s.
+        let motion = PassMotion::new(KickKind::HighPass, std::f32::consts::PI, 0.0);
+        let mut rng = MatchRng::new(3, 1, false);
+        let v = motion.touch(KickKind::HighPass, high_pass_velocity(Vec2::NEG_X, 52.0), 0.0, 1.0, &mut rng);
         let across = v.truncate().length();
         assert!((29.0..33.0).contains(&across) && (11.0..14.5).contains(&v.z), "{v}");
         assert!(v.x < 0.0 && v.y.abs() < 1e-6, "{v}");
@@ -311,9 +301,12 @@ mod tests {
 
     #[test]
     fn a_long_ground_pass_leaves_at_the_touch_cap_and_bounces() {
-        // GRF 2.10.2: a 50 m pass back to the keeper leaves at about 17 m/s and rises 0.7 m.
+        // GRF 2.10.2: a 50 m pass back to the keeper, from a stand facing upfield, is played with
+        // the turn right round: capped at 30 × (0.7 × 0.4 + 0.3) = 17.4 m/s, with 2.5 m/s of
+        // lift for the pace it lacks on top of its own rise (the touch log's 17.5 m/s cap).
         use crate::geometry::Side;
-        let kicker = player(Side::Left, 1, Vec2::ZERO);
+        let mut kicker = player(Side::Left, 1, Vec2::ZERO);
+        kicker.ready_kick();
         let kick = Kick {
             kind: KickKind::ShortPass,
             target: super::super::KickTarget::Direction(Vec2::NEG_X),
@@ -322,15 +315,21 @@ mod tests {
         };
         let mut rng = MatchRng::new(3, 1, false);
         let mut ball = Ball::at_rest(Vec2::ZERO);
-        launch(&mut ball, &kicker, &kick, Vec2::new(-50.0, 0.0), 1.0, &mut rng);
+        launch(&mut ball, &kicker, &kick, Vec2::new(-50.0, 0.0), 1.0, false, &mut rng);
         let ground = ball.velocity.truncate().length();
-        assert!((PASS_TOUCH_SPEED - 0.01..=PASS_TOUCH_SPEED + 0.01).contains(&ground), "{ground}");
-        let apex = ball.velocity.z * ball.velocity.z / (2.0 * GRAVITY);
-        assert!((0.5..1.0).contains(&apex), "apex {apex} m");
+        assert!((17.0..17.4).contains(&ground), "{ground}");
+        assert!((4.0..5.5).contains(&ball.velocity.z), "{}", ball.velocity);
+        // Played on from a run it leaves far harder: GRF's cap of 30 m/s.
+        kicker.velocity = Vec2::new(-5.0, 0.0);
+        kicker.facing = Vec2::NEG_X;
+        kicker.ready_kick();
+        let mut on = Ball::at_rest(Vec2::ZERO);
+        launch(&mut on, &kicker, &kick, Vec2::new(-50.0, 0.0), 1.0, false, &mut rng);
+        assert!((29.5..30.0).contains(&on.velocity.truncate().length()), "{}", on.velocity);
         // A short one stays about the grass (GRF: 0.11 m/s of rise per m/s of pace), and leaves
         // at GRF's auto-pass pace: 16 m/s over 10 m.
         let mut short = Ball::at_rest(Vec2::ZERO);
-        launch(&mut short, &kicker, &kick, Vec2::new(-10.0, 0.0), 1.0, &mut rng);
+        launch(&mut short, &kicker, &kick, Vec2::new(-10.0, 0.0), 1.0, false, &mut rng);
         assert!(short.velocity.z * short.velocity.z / (2.0 * GRAVITY) < 0.2);
         let pace = short.velocity.truncate().length();
         assert!((15.5..16.5).contains(&pace), "{pace}");

@@ -9,6 +9,7 @@ mod magnet;
 mod mode;
 mod possession;
 mod tick;
+mod touch;
 mod trip;
 
 use std::ops::Range;

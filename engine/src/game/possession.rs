@@ -446,7 +446,7 @@ impl Match {
         {
             // A first-time kick: the touch is the kick; he never has the ball at his feet.
             self.inputs[g].first_time = None;
-            self.players[g].kick_run = self.players[g].velocity;
+            self.players[g].ready_kick();
             self.execute_kick(g, kick);
             return;
         }
@@ -454,7 +454,7 @@ impl Match {
             && !keeper_hands
         {
             // An agent's kick asked for before he had the ball: struck at the first touch.
-            self.players[g].kick_run = self.players[g].velocity;
+            self.players[g].ready_kick();
             self.execute_kick(g, kick);
             return;
         }

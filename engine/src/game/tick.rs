@@ -172,7 +172,7 @@ impl Match {
                 } else if self.owner == Some(g) && self.players[g].pending_kick.is_none() {
                     let ticks = self.wind_up_ticks(g, &kick);
                     self.players[g].pending_kick = Some((kick, ticks));
-                    self.players[g].kick_run = self.players[g].velocity;
+                    self.players[g].ready_kick();
                 } else if self.owner.is_none() && self.agent_driven[g] && self.at_loose_ball(g) {
                     // GRF's buttons at a loose ball not yet his: the kick, shot or pass, waits for
                     // his first touch and is that touch (measured, GRF 2.10: a shot pressed at
@@ -320,7 +320,8 @@ impl Match {
         let kicker = &self.players[g];
         let stat = if kick.kind == KickKind::Shot { kicker.attributes.shooting } else { kicker.attributes.passing };
         let accuracy = kicker.skill(stat, self.theta(g));
-        launch(&mut self.ball, &self.players[g], &kick, target, accuracy, &mut self.rng);
+        let throw_in = self.mode == GameMode::ThrowIn && self.taker == Some(g);
+        launch(&mut self.ball, &self.players[g], &kick, target, accuracy, throw_in, &mut self.rng);
         let p = &mut self.players[g];
         p.touch_cooldown = KICK_COOLDOWN;
         p.pending_kick = None;

@@ -26,7 +26,8 @@ impl Surface {
     /// (normal restitution, tangential velocity kept) on impact.
     pub fn response(self) -> (f32, f32) {
         match self {
-            // GRF's ball bounce factor 0.62 (docs/grf-compatibility.md#pitch-geometry); grass takes a little speed.
+            // GRF's ball bounce factor 0.62 (docs/grf-compatibility.md#pitch-geometry); the speed
+            // the grass takes depends on the impact (`Ball::integrate` uses `bounce_keep`).
             Surface::Ground => (0.62, 0.92),
             Surface::Post | Surface::Crossbar => (0.75, 0.95),
             // Nets absorb the ball so it drops and stays in the goal.

@@ -8,7 +8,8 @@ mod player_motion;
 mod strides;
 
 pub use ball::{
-    BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_QUADRATIC, ROLL_QUADRATIC_TOTAL, rolled_speed,
+    BALL_DRAG, BOUNCE_RESTITUTION, Ball, ROLL_DECELERATION, ROLL_QUADRATIC, ROLL_QUADRATIC_TOTAL, bounce_keep,
+    rolled_speed,
 };
 pub use colliders::{PitchColliders, Surface};
 pub(crate) use contacts::{Contact, Contacts};

@@ -53,6 +53,10 @@ pub struct Player {
     /// carry the body's run into the touch, and a shot hit across that run is the harder one.
     #[serde(default)]
     pub(crate) kick_run: Vec2,
+    /// Where he faced when he asked for that kick: a standing kicker's pass is played round
+    /// from it (`game::touch`), though he turns to the target while he winds up.
+    #[serde(default)]
+    pub(crate) kick_facing: Vec2,
     /// An agent's player is stepping to a loose ball by himself (GRF's automatic ball control).
     #[serde(default)]
     pub(crate) controlling_ball: bool,
@@ -78,6 +82,12 @@ pub const SPRINT_SPEED: f32 = 8.0;
 pub const DRIBBLE_SPEED: f32 = 3.5;
 
 impl Player {
+    /// Notes his run and facing as he asks for a kick ([`Player::kick_run`], `kick_facing`).
+    pub(crate) fn ready_kick(&mut self) {
+        self.kick_run = self.velocity;
+        self.kick_facing = self.facing;
+    }
+
     /// GRF's possession point (m): 0.05 s of his run and 0.1 m along his facing ahead of him.
     /// GRF's possession test measures the ball from here
     /// (docs/grf-compatibility.md#raw-observation), so a player walking away from a ball leaves it
@@ -109,6 +119,7 @@ impl Player {
             dive_ticks: 0,
             pending_kick: None,
             kick_run: Vec2::ZERO,
+            kick_facing: Vec2::ZERO,
             queued_kick: None,
             controlling_ball: false,
             interfere_ticks: 0,

@@ -126,9 +126,8 @@ impl Ball {
     }
 
     fn respond(&mut self, normal: Vec3, surface: Surface) {
-        let (restitution, keep) = surface.response();
         let vn = self.velocity.dot(normal);
-        let keep = if surface == Surface::Ground { bounce_keep(-vn) } else { keep };
+        let (restitution, keep) = surface.response(-vn);
         let normal_part = normal * vn;
         let tangent = self.velocity - normal_part;
         self.velocity = tangent * keep - normal_part * restitution;
@@ -179,5 +178,28 @@ mod tests {
         assert!(peaks.len() >= 2, "peaks {peaks:?}");
         assert!(peaks.windows(2).all(|w| w[1] < w[0]));
         assert!(b.on_ground());
+    }
+
+    #[test]
+    fn a_ball_landing_hard_loses_more_of_its_pace_across_the_grass() {
+        // GRF 2.10's impact friction: 0.97 kept landing at 1 m/s down, 0.76 at 6 m/s.
+        assert!((bounce_keep(1.0) - 0.969).abs() < 1e-3 && (bounce_keep(6.0) - 0.761).abs() < 1e-3);
+        assert_eq!(bounce_keep(0.2), 0.99);
+        assert_eq!(bounce_keep(30.0), 0.49);
+        let c = PitchColliders::new();
+        let across_after_landing = |drop: f32| {
+            let mut b = Ball::at_rest(Vec2::ZERO);
+            b.position.z = drop;
+            b.velocity = Vec3::new(10.0, 0.0, 0.0);
+            let before = loop {
+                let v = b.velocity;
+                if b.integrate(TICK_SECONDS, &c) == Some(Surface::Ground) {
+                    break v.truncate().length();
+                }
+            };
+            b.velocity.truncate().length() / before
+        };
+        let (soft, hard) = (across_after_landing(0.5), across_after_landing(2.5));
+        assert!(hard < soft - 0.1 && soft > 0.88, "kept {soft} from 0.5 m, {hard} from 2.5 m");
     }
 }

@@ -23,12 +23,13 @@ pub enum Surface {
 }
 
 impl Surface {
-    /// (normal restitution, tangential velocity kept) on impact.
-    pub fn response(self) -> (f32, f32) {
+    /// (normal restitution, tangential velocity kept) on an impact at `impact` m/s into the
+    /// surface.
+    pub fn response(self, impact: f32) -> (f32, f32) {
         match self {
-            // GRF's ball bounce factor 0.62 (docs/grf-compatibility.md#pitch-geometry); the speed
-            // the grass takes depends on the impact (`Ball::integrate` uses `bounce_keep`).
-            Surface::Ground => (0.62, 0.92),
+            // GRF's ball bounce factor 0.62 (docs/grf-compatibility.md#pitch-geometry); the pace
+            // the grass takes grows with the impact (GRF's impact friction).
+            Surface::Ground => (0.62, super::ball::bounce_keep(impact)),
             Surface::Post | Surface::Crossbar => (0.75, 0.95),
             // Nets absorb the ball so it drops and stays in the goal.
             Surface::Net => (0.08, 0.25),

@@ -276,3 +276,32 @@ fn a_high_pass_asked_of_a_standing_player_facing_away_from_its_target_is_not_str
         }
     }
 }
+
+/// The fastest the ball goes across the grass over `steps` steps of `actions` (then idle), m/s.
+fn fastest_ball(env: &mut Env, actions: &[Action], steps: usize) -> f32 {
+    let mut fastest = 0.0f32;
+    for t in 0..steps {
+        env.step(&[actions.get(t).copied().unwrap_or(Action::Idle)]).unwrap();
+        fastest = fastest.max(env.game().ball().velocity.truncate().length());
+    }
+    fastest
+}
+
+#[test]
+fn a_pass_struck_on_along_the_run_leaves_far_faster_than_one_turned_round_from_a_stand() {
+    // GRF 2.10.2, academy_run_to_score, a short pass back to the keeper 52 m away: struck standing
+    // (facing upfield) it leaves at 16.5-17.3 m/s; struck while running towards the keeper at
+    // 1.6-5 m/s, at 24.2-31.3 (docs/grf-compatibility.md#action-effects). Its kicking motion
+    // caps it (`game::touch`).
+    let mut env = common::env("academy_run_to_score", 1);
+    play(&mut env, &[], 8);
+    assert!(owned_by_agent(&env));
+    let standing = fastest_ball(&mut env, &[Action::ShortPass], 20);
+    assert!((16.0..19.0).contains(&standing), "standing: {standing} m/s");
+    let mut env = common::env("academy_run_to_score", 1);
+    play(&mut env, &[], 8);
+    let mut run = vec![Action::Left; 5];
+    run.push(Action::ShortPass);
+    let on_the_run = fastest_ball(&mut env, &run, 25);
+    assert!((24.0..32.0).contains(&on_the_run), "on the run: {on_the_run} m/s");
+}

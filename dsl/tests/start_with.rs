@@ -66,7 +66,9 @@ fn the_penalty_drill_starts_on_the_spot_and_ends_on_a_goal_a_save_or_a_miss() {
     assert_eq!(o.game_mode, GameMode::Penalty);
     assert!(near(o.ball[0], 44.0 / 54.4, 1e-4) && o.ball[1] == 0.0, "ball on the mark: {:?}", o.ball);
     assert!(near(o.left_team[1][0], 43.5 / 54.4, 1e-4), "taker {:?}", o.left_team[1]);
-    assert_eq!(o.ball_owned_team, 0);
+    // On the mark and not yet played, the ball is nobody's in the observation (GRF 2.10.2's
+    // tests.penalty shows `ball_owned_team` −1 with the taker beside it).
+    assert_eq!(o.ball_owned_team, -1);
     assert!(near(o.right_team[0][0], 0.98 * 55.0 / 54.4, 1e-4), "keeper on his line: {:?}", o.right_team[0]);
     assert_eq!(o.active, 1, "the agent drives the taker");
 
@@ -114,7 +116,9 @@ fn the_corner_drill_starts_with_a_corner_kick_and_plays_on() {
     let o: RawObservation = env.observations()[0].clone();
     assert_eq!(o.game_mode as i32, 4, "GRF's raw game_mode for a corner");
     assert!(near(o.ball[0], 55.0 / 54.4, 1e-4) && near(o.ball[1], 36.0 / 83.6, 1e-4), "ball {:?}", o.ball);
-    assert_eq!(o.ball_owned_team, 0);
+    // Placed for the kick, the ball is nobody's in the observation until it is played (GRF's
+    // owner is the last toucher; `Match::observed_owner`), though the taker has it at his feet.
+    assert_eq!(o.ball_owned_team, -1);
     // The left back, GRF's corner taker at (1, 0.42), takes it.
     assert_eq!(env.game().owner(), Some((Side::Left, 1)));
     let spot = glam::Vec2::new(55.0, 36.0);

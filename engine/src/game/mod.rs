@@ -380,9 +380,17 @@ impl Match {
     /// 6 m/s). GRF 2.10 reports its `ball_owned_team` this way
     /// (docs/grf-compatibility.md#raw-observation), so a standing tackle's knock shows as the
     /// tackler's ball until it has run a metre from him; the possession-change end reads it too.
+    ///
+    /// A ball the referee placed for a goal kick, corner kick, free kick or penalty kick is
+    /// nobody's until the taker plays it, though touchline's taker holds it at his feet: GRF's
+    /// test wants the last toucher, who put the ball out or was at the foul, not the taker
+    /// (measured in GRF 2.10.2: `ball_owned_team` −1 on every step of those restarts). A
+    /// thrower has the ball in his hands, and GRF shows it his.
     pub fn observed_owner(&self) -> Option<(Side, usize)> {
         if self.owner.is_some() {
-            return self.owner();
+            let placed =
+                matches!(self.mode, GameMode::GoalKick | GameMode::Corner | GameMode::FreeKick | GameMode::Penalty);
+            return if placed && self.owner == self.taker { None } else { self.owner() };
         }
         let g = self.last_touch?;
         let p = &self.players[g];

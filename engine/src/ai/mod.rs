@@ -450,6 +450,27 @@ impl TeamAi {
     }
 }
 
+/// The whole match as the AI sees it, for the AI's unit tests (`Match::run_ai` builds its own
+/// from the fields it does not borrow mutably).
+#[cfg(test)]
+pub(crate) fn test_view(m: &crate::game::Match) -> MatchView<'_> {
+    MatchView {
+        players: &m.players,
+        ranges: &m.ranges,
+        ball: &m.ball,
+        owner: m.owner,
+        last_touch: m.last_touch,
+        mode: m.mode,
+        taker: m.taker,
+        set_piece_ticks: m.set_piece_ticks,
+        tick: m.in_play_ticks,
+        owner_ticks: m.owner_ticks,
+        offsides: m.offsides,
+        agent_driven: &m.agent_driven,
+        paths: &m.paths,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -485,28 +506,10 @@ mod tests {
         m
     }
 
-    fn view(m: &Match) -> MatchView<'_> {
-        MatchView {
-            players: &m.players,
-            ranges: &m.ranges,
-            ball: &m.ball,
-            owner: m.owner,
-            last_touch: m.last_touch,
-            mode: m.mode,
-            taker: m.taker,
-            set_piece_ticks: m.set_piece_ticks,
-            tick: m.in_play_ticks,
-            owner_ticks: m.owner_ticks,
-            offsides: m.offsides,
-            agent_driven: &m.agent_driven,
-            paths: &m.paths,
-        }
-    }
-
     #[test]
     fn a_player_far_from_the_ball_decides_every_240_ms_and_one_near_it_at_every_decision() {
         let mut m = match_in_play();
-        let v = view(&m);
+        let v = test_view(&m);
         let analysis = prediction::analyse(&v, Side::Left, &Difficulty::new(1.0));
         let (keeper, near, forward) = (0, 3, 4);
         assert!(v.players[near].position.distance(v.ball.xy()) < FAR_FROM_BALL);
@@ -526,7 +529,7 @@ mod tests {
         assert!(TeamAi::due(&v, forward, &analysis, true, 99));
         // At a set piece everyone decides at every decision.
         m.mode = GameMode::FreeKick;
-        let v = view(&m);
+        let v = test_view(&m);
         assert!(TeamAi::due(&v, forward, &analysis, false, 99));
     }
 }

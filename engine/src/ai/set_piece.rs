@@ -136,21 +136,7 @@ mod tests {
 
     /// The kicks the left taker plays from `m`'s restart over 200 draws of the match's stream.
     fn kicks(m: &Match) -> Vec<Kick> {
-        let view = MatchView {
-            players: &m.players,
-            ranges: &m.ranges,
-            ball: &m.ball,
-            owner: m.owner,
-            last_touch: m.last_touch,
-            mode: m.mode,
-            taker: m.taker,
-            set_piece_ticks: m.set_piece_ticks,
-            tick: m.in_play_ticks,
-            owner_ticks: m.owner_ticks,
-            offsides: m.offsides,
-            agent_driven: &m.agent_driven,
-            paths: &m.paths,
-        };
+        let view = crate::ai::test_view(m);
         let analysis = prediction::analyse(&view, Side::Left, &Difficulty::new(1.0));
         let taker = m.taker.expect("a taker");
         let mut rng = MatchRng::new(5, 0, true);

@@ -43,10 +43,12 @@ SOURCE = (
     "seed's parity sets the order GRF's engine processes the two teams in; left to itself GRF "
     "draws a new seed every episode): 8 seeds for the random agent, one per episode for the "
     "idle one (with one seed GRF plays every idle episode alike). Each pooled figure's se is the "
-    "larger of the pooled sample's and the per-seed values' spread over sqrt(seeds). Measured "
-    "2026-11-25 (issue 15)."
+    "larger of the pooled sample's and the per-seed values' spread over sqrt(seeds). Full "
+    "matches: one engine seed each. Measured 2026-11-25 from base seed 1000; the full-match cases "
+    "again 2026-11-29, 20 more matches each from base seed 2000, pooled (`runs`; issue 15)."
 )
-#: Full matches per match case, one engine seed each (the first reference played 5 with one seed).
+#: Full matches per match case and sample, one engine seed each (the first reference played 5 with
+#: one seed).
 MATCHES = 10
 #: The base seed of the engine seeds measured (`fidelity_cases.engine_seed`); the harness's runs of
 #: touchline start from 0.
@@ -95,6 +97,14 @@ def pool(samples: list[dict[str, Any]]) -> dict[str, Any]:
     }
 
 
+def match_pooled(goals: dict[str, list[int]]) -> dict[str, Any]:
+    """A match case's goals per match, for and against, as mean, se and n."""
+    return {
+        f"goals_{side}": {"mean": statistics.fmean(g), "se": fs.sample_se(g), "n": len(g)}
+        for side, g in goals.items()
+    }
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cases", default="", help="only case ids containing this")
@@ -102,15 +112,34 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--matches", type=int, default=MATCHES, help="full matches per match case, one seed each"
     )
+    parser.add_argument(
+        "--base-seed",
+        type=int,
+        default=BASE_SEED,
+        help="base of the engine seeds; a new base gives a new sample of seeds",
+    )
+    parser.add_argument(
+        "--add",
+        action="store_true",
+        help="add this run's samples and matches to those already in --json and pool them all "
+        "(for a second sample, on seeds of another --base-seed)",
+    )
     args = parser.parse_args(argv)
     reference = json.loads(REFERENCE.read_text())
     out: dict[str, Any] = {"source": SOURCE, "cases": {}}
+    if args.add:
+        out = json.loads(args.json.read_text())
+    runs_note = f"{args.cases or 'every case'} from base seed {args.base_seed}"
+    out.setdefault("runs", []).append(runs_note)
     for ref in reference["academy"]["cases"]:
         case_id = f"academy {ref['scenario']} {ref['policy']}"
         if args.cases not in case_id:
             continue
-        runs = cases.run_over_seeds(ref["scenario"], ref["policy"], ref["n"], BASE_SEED, case_id)
-        samples = [summarise(episodes) for episodes in runs]
+        runs = cases.run_over_seeds(
+            ref["scenario"], ref["policy"], ref["n"], args.base_seed, case_id
+        )
+        samples = out["cases"].get(case_id, {}).get("samples", []) if args.add else []
+        samples = samples + [summarise(episodes) for episodes in runs]
         pooled = pool(samples)
         out["cases"][case_id] = {"samples": samples, "pooled": pooled}
         ends = " ".join(f"{e} {pooled['ends'][e]['p']:.3f}" for e in cases.ENDS)
@@ -125,19 +154,15 @@ def main(argv: list[str] | None = None) -> int:
             continue
         # One match per engine seed, so every match is a new draw of GRF's parity and randomness.
         runs = cases.run_over_seeds(
-            ref["scenario"], ref["policy"], args.matches, BASE_SEED, case_id
+            ref["scenario"], ref["policy"], args.matches, args.base_seed, case_id
         )
+        before = out["cases"].get(case_id, {}).get("matches", {}) if args.add else {}
         goals = {
-            side: [e.goals_for if side == "for" else e.goals_against for r in runs for e in r]
+            side: before.get(side, [])
+            + [e.goals_for if side == "for" else e.goals_against for r in runs for e in r]
             for side in ("for", "against")
         }
-        out["cases"][case_id] = {
-            "matches": goals,
-            "pooled": {
-                f"goals_{side}": {"mean": statistics.fmean(g), "se": fs.sample_se(g), "n": len(g)}
-                for side, g in goals.items()
-            },
-        }
+        out["cases"][case_id] = {"matches": goals, "pooled": match_pooled(goals)}
         print(f"{case_id}: goals for {goals['for']}, against {goals['against']}")
         sys.stdout.flush()
         args.json.write_text(json.dumps(out, indent=1))

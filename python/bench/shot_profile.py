@@ -104,7 +104,7 @@ def band(distance: float) -> str:
 
 def shots_in_match(scenario: str, policy: str, seed: int, steps: int) -> tuple[list[Shot], int]:
     """The shots at our goal in one match and the goals we conceded."""
-    env = cases.make_env(scenario, seed)
+    env = cases.make_env(scenario, seed, builtin_ai=policy == "builtin_ai")
     agent = cases.make_policy(policy, env, seed)
     agent.start()
     first = env.reset()

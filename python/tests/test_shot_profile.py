@@ -56,3 +56,9 @@ def test_a_match_against_an_idle_agent_counts_shots_and_goals() -> None:
         assert 0.0 <= s.distance <= profile.SHOT_RANGE and s.speed >= profile.SHOT_SPEED
     rows = profile.table(shots, 1)
     assert len(rows) == len({profile.band(s.distance) for s in shots})
+
+
+def test_the_built_in_ai_can_play_the_agents_side() -> None:
+    # GRF's built-in action (19) is in the v2 action set only: the env must be made with it.
+    shots, conceded = profile.shots_in_match("11_vs_11_stochastic", "builtin_ai", 100, 300)
+    assert conceded >= sum(s.scored for s in shots)

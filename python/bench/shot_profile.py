@@ -26,7 +26,11 @@ Measured here (2026-11-29; GRF 2.10.2 and touchline at 712a2df; idle agent, `--s
 
 (The keeper's distances are medians over the 15-20 m shots.) Both engines score about 3 in 10 of
 these shots. The goals against follow the number of shots, not the finishing: GRF's medium side
-takes 3.5 shots a match at an idle agent's team, touchline's 8.7. touchline's also shoots from 25
+takes 3.5 shots a match at an idle agent's team, touchline's 8.7. With the built-in AI on our
+controlled player too (`--policy builtin_ai`), GRF's medium side takes 1.0 shot a match (0.5 goals
+against, 10 matches) and touchline's 0.7 (0.2, 40 matches). So one idle player lets in 3.5 times
+the shots in GRF and 12 times in touchline: touchline's defence leans far more on the one player
+the agent controls. touchline's also shoots from 25
 m and more (1.1-1.3 a match), which GRF's never does. GRF's keeper meets a shot from 15-20 m about
 6.5 m off his line, while touchline's stands on it. That is because touchline's keeper rushes only
 at a carrier who has no team-mate of the keeper's within 10 m (`ai/goalkeeper.rs`). Without that

@@ -189,8 +189,10 @@ def test_record_episode_statistics_around_a_gymnasium_vector_env() -> None:
     envs = gymnasium.make_vec(f"touchline/{DRILL}-v0", num_envs=2, vectorization_mode="sync")
     envs = gymnasium.wrappers.vector.RecordEpisodeStatistics(envs)
     envs.reset(seed=0)
+    # Seeded actions, and room for two drill episodes of up to 401 steps each in either env.
+    envs.action_space.seed(0)
     finished = 0
-    for _ in range(400):
+    for _ in range(1000):
         _, _, _terminated, _truncated, infos = envs.step(envs.action_space.sample())
         if "episode" in infos:
             finished += int(infos["_episode"].sum())

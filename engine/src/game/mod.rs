@@ -8,6 +8,7 @@ pub(crate) mod kick;
 mod magnet;
 mod mode;
 mod possession;
+mod steal;
 mod tick;
 mod touch;
 mod trip;

@@ -83,7 +83,7 @@ impl Match {
     /// Opponents near the owner try to take the ball: standing challenges win it or trip the
     /// carrier (a foul); a slide's first contact is judged for a foul (Law 12, [`rules::fouls`]).
     fn challenge(&mut self, owner: usize) {
-        if self.in_hands {
+        if self.in_hands || self.steal(owner) {
             return;
         }
         let side = self.players[owner].side;
@@ -187,7 +187,7 @@ impl Match {
 
     /// `g` takes the ball where it lies and brings it to his feet (the touch is judged first: it
     /// may be offside).
-    fn take_ball(&mut self, g: usize) {
+    pub(super) fn take_ball(&mut self, g: usize) {
         self.last_touch = Some(g);
         self.touched(g);
         if self.whistle.is_some() {

@@ -30,8 +30,8 @@ const LOST_TICKS: u16 = 20;
 
 impl Match {
     /// The opponent of `owner` who takes his ball with a ball-control touch this tick, if one does
-    /// (and then he has it): the other team's outfield player nearest the ball (GRF's designated
-    /// player), with the ball within his [`REACH`], low, not too fast for him, nearer to him than
+    /// (and then he has it): the other team's player nearest the ball (GRF's designated player,
+    /// who may be the keeper), with the ball within his [`REACH`], low, not too fast for him, nearer to him than
     /// to the carrier, and no body between him and it.
     pub(super) fn steal(&mut self, owner: usize) -> bool {
         let ball = self.ball.xy();
@@ -40,14 +40,10 @@ impl Match {
         }
         let carrier = self.players[owner].position;
         let side = self.players[owner].side.opponent();
-        let Some(q) = self.ranges[side.index()]
-            .clone()
-            .filter(|&q| self.players[q].active && !self.players[q].is_keeper())
-            .min_by(|&a, &b| {
-                let d = |g: usize| self.players[g].position.distance_squared(ball);
-                d(a).total_cmp(&d(b))
-            })
-        else {
+        let Some(q) = self.ranges[side.index()].clone().filter(|&q| self.players[q].active).min_by(|&a, &b| {
+            let d = |g: usize| self.players[g].position.distance_squared(ball);
+            d(a).total_cmp(&d(b))
+        }) else {
             return false;
         };
         let p = &self.players[q];

@@ -238,11 +238,13 @@ impl TeamAi {
             self.think_carry = interval - whole;
             self.next_think = view.tick.saturating_add(whole as u64);
         }
-        for (i, plan) in self.plans.iter_mut().enumerate() {
-            if agent_driven[i] || native[i] {
+        // The team's slices walked together (indexing each by the slot checked every bound).
+        let players = &view.players[first..first + self.plans.len()];
+        let slots = self.plans.iter_mut().zip(inputs.iter_mut()).zip(agent_driven.iter().zip(native)).zip(players);
+        for (((plan, input), (&agent, &native)), p) in slots {
+            if agent || native {
                 continue;
             }
-            let p = &view.players[first + i];
             let to = plan.target - p.position;
             let dist = to.length();
             // Arrive: slow down within the last metres so players settle on their spots.
@@ -251,7 +253,6 @@ impl TeamAi {
             // Every field of the input, written in place: built as a whole `PlayerInput` and
             // copied, it went through the stack in pieces that a wide load then read back, a
             // store-forwarding stall that cost more than the rest of this loop.
-            let input = &mut inputs[i];
             input.velocity = velocity;
             input.look = plan.look;
             input.dribble = plan.dribble;

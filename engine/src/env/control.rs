@@ -33,21 +33,33 @@ const SLOW_BALL: f32 = 5.0;
 /// predicted position he can be at in time), straight to it while someone has it at his feet (it
 /// goes where he goes) or it is slow. Each time is GRF's ([`Reach`]).
 fn time_to_ball(game: &Match, path: &LazyPath, p: &crate::player::Player) -> f32 {
+    // With no time to beat every sample is tested: always an answer (the fallback is unused).
+    time_to_ball_before(game, path, p, f32::INFINITY).unwrap_or(f32::INFINITY)
+}
+
+/// [`time_to_ball`] where it is below `before` (s); `None` where along the path the samples before
+/// `before` are all out of his reach, so that his time is `before` or later (the time after the
+/// last sample is no less than its time). [`fastest`] skips the samples the runners after the
+/// quickest so far cannot win on.
+fn time_to_ball_before(game: &Match, path: &LazyPath, p: &crate::player::Player, before: f32) -> Option<f32> {
     let reach = Reach::of(p);
     let ball = game.ball();
     if straight_to_ball(game) {
-        return reach.time_to(ball.xy());
+        return Some(reach.time_to(ball.xy()));
     }
     let path = path.get_or_init(|| game.paths.path(game.ball()));
     let mut last = (0.0, ball.xy());
     for (k, at) in path.at().iter().enumerate() {
         let t = crate::ai::SAMPLE_DT * (k + 1) as f32;
+        if t >= before {
+            return None;
+        }
         last = (t, at.truncate());
         if at.z <= REACH_HEIGHT && reach.by(at.truncate(), t) {
-            return t;
+            return Some(t);
         }
     }
-    last.0 + reach.time_to(last.1)
+    Some(last.0 + reach.time_to(last.1))
 }
 
 /// Whether times to the ball are taken straight to where it is: someone has it at his feet, or it
@@ -219,7 +231,9 @@ fn fastest(
 ) -> Option<usize> {
     let mut best: Option<(usize, f32)> = None;
     for i in candidates {
-        let t = time_to_ball(game, path, &team[i]);
+        // Only a time below the best so far wins: a candidate who cannot beat it is not timed.
+        let before = best.map_or(f32::INFINITY, |(_, bt)| bt);
+        let Some(t) = time_to_ball_before(game, path, &team[i], before) else { continue };
         if best.is_none_or(|(_, bt)| t.total_cmp(&bt).is_lt()) {
             best = Some((i, t));
         }

@@ -54,6 +54,9 @@ const SLIDE_REACH: f32 = 1.3;
 /// beat him in 8, 2 and 0 of 30 episodes; with these values touchline's in 22, 5 and 0 of 90
 /// (docs/grf-compatibility.md, "a keeper stops the shots he gets his hands to in time").
 const KEEPER_IN_TIME: (f32, f32) = (0.3, 1.1);
+// Every reach from a player's position is within a keeper's dive (`Match::control_loose_ball`'s
+// early test).
+const _: () = assert!(FOOT_REACH <= DIVE_REACH && HAND_REACH <= DIVE_REACH && SLIDE_REACH <= DIVE_REACH);
 /// Distance between two players' centres (m) at which a slide meets the man.
 const BODY_CONTACT: f32 = 0.9;
 /// A challenger gets to the ball round the carrier only this likely or more (GRF: 0.2).
@@ -348,6 +351,14 @@ impl Match {
         let mut best_d2 = f32::INFINITY;
         for (g, p) in self.players.iter().enumerate() {
             if !p.active || p.touch_cooldown > 0 {
+                continue;
+            }
+            if p.position.distance_squared(ball.xy()) >= DIVE_REACH * DIVE_REACH
+                && p.possession_point().distance_squared(ball.xy()) >= POSSESSION_REACH * POSSESSION_REACH
+            {
+                // Out of every reach below (the same squared distances as there, from his position
+                // and from his possession point): he would be passed over at the reach test. Most
+                // players are, and their keeper, slide and speed tests are not worth making.
                 continue;
             }
             if p.queued_kick.is_some_and(|(_, left)| left > super::tick::QUEUED_KICK_WINDOW) {

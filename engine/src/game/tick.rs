@@ -157,6 +157,11 @@ impl Match {
             if !self.players[g].active {
                 continue;
             }
+            if self.inputs[g].kick.is_none() && !self.inputs[g].slide && self.players[g].pending_kick.is_none() {
+                // No kick asked for or winding up and no slide: nothing below applies (most
+                // players, most ticks), and the input is not copied.
+                continue;
+            }
             let input = self.inputs[g];
             if let Some(kick) = input.kick {
                 // Only the player on the ball, or an agent's player at a loose ball not yet his

@@ -130,8 +130,10 @@ pub(crate) fn separate_players(players: &mut [Player], owner: Option<usize>, con
         let first = bodies.first_row_with_contact(players, &mut contacts.along).unwrap_or(n);
         for i in first..n {
             if players[i].active && bodies.may_touch_later(i, n) {
-                resolve_contacts(players, i, owner, contacts);
-                bodies = Bodies::of(players);
+                let moved = resolve_contacts(players, i, owner, contacts);
+                // Only the players of this row's contacts moved: copying their positions alone
+                // leaves the same bodies as copying everyone's (a row was most of the scan's cost).
+                bodies.refresh(players, moved);
             }
         }
     }
@@ -162,6 +164,16 @@ impl Bodies {
             bodies.y[k] = p.position.y;
         }
         bodies
+    }
+
+    /// Copies again the positions of the players in `moved` (a bit per player, all active).
+    fn refresh(&mut self, players: &[Player], mut moved: u32) {
+        while moved != 0 {
+            let k = moved.trailing_zeros() as usize;
+            moved &= moved - 1;
+            self.x[k] = players[k].position.x;
+            self.y[k] = players[k].position.y;
+        }
     }
 
     /// The first row (player `i` against everyone after him) that may hold a contact,
@@ -228,10 +240,12 @@ impl Bodies {
 }
 
 /// Resolves the contacts of player `i` with each player after him, in order, noting each in
-/// `contacts`.
-fn resolve_contacts(players: &mut [Player], i: usize, owner: Option<usize>, contacts: &mut Contacts) {
+/// `contacts`. Returns the players it moved, a bit each (those past the 32nd left out): `i` and
+/// everyone in contact with him.
+fn resolve_contacts(players: &mut [Player], i: usize, owner: Option<usize>, contacts: &mut Contacts) -> u32 {
+    let mut moved = 0u32;
     if !players[i].active {
-        return;
+        return moved;
     }
     for j in (i + 1)..players.len() {
         if !players[j].active {
@@ -249,6 +263,7 @@ fn resolve_contacts(players: &mut [Player], i: usize, owner: Option<usize>, cont
         let overlap = MIN_DIST - dist;
         let ahead = (d + (players[j].velocity - players[i].velocity) * CONTACT_LOOKAHEAD).length();
         contacts.push(Contact { i: i as u8, j: j as u8, apart: dist, ahead });
+        moved |= bit(i) | bit(j);
         let share_i = match owner {
             Some(o) if o == i => CARRIER_SHARE,
             Some(o) if o == j => 1.0 - CARRIER_SHARE,
@@ -275,6 +290,12 @@ fn resolve_contacts(players: &mut [Player], i: usize, owner: Option<usize>, cont
             }
         }
     }
+    moved
+}
+
+/// Player `k`'s bit in a set of players (none past the 32nd).
+fn bit(k: usize) -> u32 {
+    1u32.checked_shl(k as u32).unwrap_or(0)
 }
 
 /// Draws `other`, in contact with the carrier `carrier`, towards the spot beside the carrier on

@@ -5,7 +5,8 @@
 //! - **When it triggers**: |x| > 55.17 m outside the goal, last touch by the attacking team (or by
 //!   nobody).
 //! - **Restart**: ball at x = ±0.92·55 = ±50.6 m, y = 0 (docs/grf-compatibility.md#pitch-geometry); the
-//!   goalkeeper takes it.
+//!   goalkeeper takes it. Everyone else goes at once to his place in GRF's goal-kick shape
+//!   (`set_piece_places`): the opponents back in a band round halfway, outside the penalty area.
 //! - **GRF behaviour**: the same spot; game mode 2 until the keeper plays the ball.
 //! - **Differences**: none known.
 

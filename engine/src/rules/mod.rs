@@ -14,6 +14,7 @@ pub mod kickoff;
 pub mod offside;
 pub mod penalty_kick;
 mod set_piece;
+mod set_piece_places;
 pub mod throw_in;
 
 use glam::{Vec2, Vec3};

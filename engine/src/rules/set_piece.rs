@@ -1,11 +1,14 @@
 //! Shared set-up of a set piece (goal kick, corner kick, throw-in, free kick; penalty kicks have
 //! their own in [`super::penalty_kick`]): ball on the spot, the taker at the ball holding it until he plays it, goalkeepers
-//! back on their lines (docs/grf-compatibility.md#formations), opponents at least 9.15 m away (Laws 13, 16, 17).
+//! back on their lines (docs/grf-compatibility.md#formations), at a goal kick everyone else at his place in GRF's
+//! set-piece shape ([`super::set_piece_places`]; Law 16: the opponents outside the penalty area), at the others the
+//! opponents at least 9.15 m away (Laws 13, 15, 17).
 
 use glam::Vec2;
 
-use super::Restart;
+use super::{Restart, set_piece_places};
 use crate::game::{GameMode, Match};
+use crate::geometry::TeamFrame;
 use crate::geometry::pitch::{BALL_RADIUS, CENTRE_CIRCLE_RADIUS, HALF_LENGTH, HALF_WIDTH};
 use crate::physics::Ball;
 
@@ -45,6 +48,11 @@ pub(crate) fn set_up(m: &mut Match, restart: Restart) {
         } else if p.is_keeper() {
             p.position = Vec2::new(-p.side.attack_sign() * KEEPER_LINE_X, 0.0);
             p.facing = Vec2::new(p.side.attack_sign(), 0.0);
+        } else if restart.mode == GameMode::GoalKick {
+            // GRF's set-piece preparation: everyone to his formation place in his team's band.
+            let frame = TeamFrame::of(p.side);
+            p.position = frame.vec2(set_piece_places::goal_kick_place(p.home, p.side == side));
+            p.facing = (restart.spot - p.position).normalize_or(Vec2::new(p.side.attack_sign(), 0.0));
         } else if p.side != side {
             let away = p.position - restart.spot;
             if away.length() < CENTRE_CIRCLE_RADIUS {

@@ -182,7 +182,7 @@ impl Match {
     }
 
     /// The keeper `q` took the ball in his hands from the dribbler `owner`.
-    fn claimed(&mut self, owner: usize, q: usize) {
+    pub(super) fn claimed(&mut self, owner: usize, q: usize) {
         self.players[owner].touch_cooldown = TACKLED_COOLDOWN;
         self.take_ball(q);
         self.in_hands = self.owner == Some(q);

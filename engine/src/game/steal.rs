@@ -11,6 +11,7 @@
 //! only way it had, won 28 %.
 
 use super::{Match, possession};
+use crate::geometry::pitch::in_penalty_area;
 
 /// Reach (m) of a ball-control touch on a carrier's ball: from where the challenger's body is
 /// going (0.05 s of his run on, 0.1 m ahead along his facing), as GRF's possession test measures
@@ -31,8 +32,9 @@ const LOST_TICKS: u16 = 20;
 impl Match {
     /// The opponent of `owner` who takes his ball with a ball-control touch this tick, if one does
     /// (and then he has it): the other team's player nearest the ball (GRF's designated player,
-    /// who may be the keeper), with the ball within his [`REACH`], low, not too fast for him, nearer to him than
-    /// to the carrier, and no body between him and it.
+    /// who may be the keeper), with the ball within his [`REACH`], low, not too fast for him,
+    /// nearer to him than to the carrier, and no body between him and it. A keeper in his own
+    /// penalty area takes it in his hands, as he does a dribbled ball he dives for.
     pub(super) fn steal(&mut self, owner: usize) -> bool {
         let ball = self.ball.xy();
         if self.ball.position.z > HEIGHT {
@@ -55,7 +57,9 @@ impl Match {
             && p.position.distance_squared(ball) < carrier.distance_squared(ball)
             && (self.ball.velocity.truncate() - p.velocity).length_squared() < RELATIVE_SPEED * RELATIVE_SPEED
             && possession::duel_likeliness(p.position, carrier, ball) >= MIN_LIKELINESS;
-        if takes {
+        if takes && p.is_keeper() && in_penalty_area(p.position.x, p.position.y, -p.side.attack_sign()) {
+            self.claimed(owner, q);
+        } else if takes {
             self.players[owner].touch_cooldown = LOST_TICKS;
             self.take_ball(q);
         }
@@ -72,21 +76,27 @@ mod tests {
     use crate::scenario::{PlayerEntry, Scenario};
 
     /// Our centre midfielder on the ball at the centre spot, walking along +x with it 0.6 m ahead;
-    /// theirs standing at `at`, facing him.
+    /// their centre midfielder standing at `at`, facing him.
     fn approach(at: Vec2) -> Match {
+        approach_from(Vec2::ZERO, Role::CM, at)
+    }
+
+    /// Our centre midfielder on the ball at `from`, walking along +x with it 0.6 m ahead; their
+    /// `role` standing at `at`, facing him.
+    fn approach_from(from: Vec2, role: Role, at: Vec2) -> Match {
         let s = Scenario {
             left_team: vec![PlayerEntry::new(Role::CM, -0.5, 0.0)],
-            right_team: vec![PlayerEntry::new(Role::CM, -0.5, 0.0)],
+            right_team: vec![PlayerEntry::new(role, -0.5, 0.0)],
             ..Scenario::default()
         };
         let mut m = Match::new(&s, 0, 0);
-        m.players[0].position = Vec2::ZERO;
+        m.players[0].position = from;
         m.players[0].velocity = Vec2::new(3.0, 0.0);
         m.players[0].facing = Vec2::X;
         m.players[1].position = at;
         m.players[1].velocity = Vec2::ZERO;
         m.players[1].facing = Vec2::NEG_X;
-        m.ball.position = glam::Vec3::new(0.6, 0.0, crate::geometry::pitch::BALL_RADIUS);
+        m.ball.position = (from + Vec2::new(0.6, 0.0)).extend(crate::geometry::pitch::BALL_RADIUS);
         m.ball.velocity = glam::Vec3::new(3.0, 0.0, 0.0);
         m.owner = Some(0);
         m
@@ -99,6 +109,21 @@ mod tests {
         assert!(m.steal(0));
         assert_eq!(m.owner, Some(1));
         assert!(m.players[0].touch_cooldown > 0, "the carrier is left behind for a moment");
+    }
+
+    #[test]
+    fn a_keeper_in_his_area_takes_it_in_his_hands_and_outside_it_at_his_feet() {
+        let offset = Vec2::new(1.0, 0.2);
+        // Their keeper 14 m from his goal line, inside his penalty area (16.5 m).
+        let from = Vec2::new(40.0, 0.0);
+        let mut inside = approach_from(from, Role::GK, from + offset);
+        assert!(inside.steal(0));
+        assert_eq!(inside.owner, Some(1));
+        assert!(inside.in_hands);
+        let from = Vec2::new(30.0, 0.0);
+        let mut outside = approach_from(from, Role::GK, from + offset);
+        assert!(outside.steal(0));
+        assert!(!outside.in_hands);
     }
 
     #[test]

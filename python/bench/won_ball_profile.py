@@ -27,8 +27,11 @@ Measured here (2026-11-29; GRF 2.10.2 and touchline at f814a51; 11_vs_11_stochas
 
 GRF's winner keeps the ball a median 14-33 steps before his first kick, touchline's 5-8, and in
 GRF our idle player who lost the ball has it back within a second in over half the wins (the
-raw observation's owner flips to the player nearest a contested ball), so a ball won near our
-goal gives GRF's attack a shot one time in six and touchline's two times in five.
+raw observation's owner flips to whoever touches a contested ball), so a ball won near our goal
+gives GRF's attack a shot one time in six and touchline's two times in five. Leaving out the
+wins won straight back (within 10 steps), the first kick among spells of 10 steps or more still
+comes a median 17-33 steps after the win in GRF and 5-8 in touchline (docs/grf-compatibility.md,
+"what the opponents do with a ball they win").
 
 Usage (from the repository root, with the package installed):
     PYTHONPATH=python/bench python3 python/bench/won_ball_profile.py [--scenario S] [--policy idle]

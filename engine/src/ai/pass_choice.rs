@@ -19,19 +19,30 @@ use crate::player::{MAX_PLAYERS_PER_TEAM, Player, SPRINT_SPEED};
 /// [`MAX_PLAYERS_PER_TEAM`]).
 pub(crate) struct Rivals {
     at: [Vec2; MAX_PLAYERS_PER_TEAM],
-    outfield: [bool; MAX_PLAYERS_PER_TEAM],
     len: usize,
+    /// The outfield ones' places alone, in the same order: every rating's free space looks at
+    /// them twice, and picking them out of `at` each time cost a test and a branch per opponent.
+    outfield: [Vec2; MAX_PLAYERS_PER_TEAM],
+    outfield_len: usize,
 }
 
 impl Rivals {
     /// The active ones of `opponents`, seen in `frame`.
     pub(crate) fn of(opponents: &[Player], frame: TeamFrame) -> Rivals {
-        let mut rivals =
-            Rivals { at: [Vec2::ZERO; MAX_PLAYERS_PER_TEAM], outfield: [false; MAX_PLAYERS_PER_TEAM], len: 0 };
+        let mut rivals = Rivals {
+            at: [Vec2::ZERO; MAX_PLAYERS_PER_TEAM],
+            len: 0,
+            outfield: [Vec2::ZERO; MAX_PLAYERS_PER_TEAM],
+            outfield_len: 0,
+        };
         for o in opponents.iter().filter(|o| o.active).take(MAX_PLAYERS_PER_TEAM) {
-            rivals.at[rivals.len] = frame.vec2(o.position + o.velocity * 0.2);
-            rivals.outfield[rivals.len] = !o.is_keeper();
+            let at = frame.vec2(o.position + o.velocity * 0.2);
+            rivals.at[rivals.len] = at;
             rivals.len += 1;
+            if !o.is_keeper() {
+                rivals.outfield[rivals.outfield_len] = at;
+                rivals.outfield_len += 1;
+            }
         }
         rivals
     }
@@ -42,8 +53,8 @@ impl Rivals {
     }
 
     /// Where each outfield one will be, in `opponents`' order.
-    fn outfield_at(&self) -> impl Iterator<Item = Vec2> + '_ {
-        self.at().iter().zip(&self.outfield).filter(|(_, outfield)| **outfield).map(|(&at, _)| at)
+    fn outfield_at(&self) -> &[Vec2] {
+        &self.outfield[..self.outfield_len]
     }
 }
 
@@ -55,7 +66,7 @@ fn free_space(focus: Vec2, time: f32, rivals: &Rivals) -> f32 {
     const SAFE: f32 = 5.0;
     let reach = SPRINT_SPEED * (time - 0.2).max(0.0);
     let mut crowd = 0.0;
-    for at in rivals.outfield_at() {
+    for &at in rivals.outfield_at() {
         let gap = (focus - at).length();
         let left = (gap - reach).max(0.0);
         crowd += 1.0 - left.min(SAFE) / SAFE;

@@ -19,19 +19,30 @@ use crate::player::{MAX_PLAYERS_PER_TEAM, Player, SPRINT_SPEED};
 /// [`MAX_PLAYERS_PER_TEAM`]).
 pub(crate) struct Rivals {
     at: [Vec2; MAX_PLAYERS_PER_TEAM],
-    outfield: [bool; MAX_PLAYERS_PER_TEAM],
     len: usize,
+    /// The outfield ones' places alone, in the same order: every rating's free space looks at
+    /// them twice, and picking them out of `at` each time cost a test and a branch per opponent.
+    outfield: [Vec2; MAX_PLAYERS_PER_TEAM],
+    outfield_len: usize,
 }
 
 impl Rivals {
     /// The active ones of `opponents`, seen in `frame`.
     pub(crate) fn of(opponents: &[Player], frame: TeamFrame) -> Rivals {
-        let mut rivals =
-            Rivals { at: [Vec2::ZERO; MAX_PLAYERS_PER_TEAM], outfield: [false; MAX_PLAYERS_PER_TEAM], len: 0 };
+        let mut rivals = Rivals {
+            at: [Vec2::ZERO; MAX_PLAYERS_PER_TEAM],
+            len: 0,
+            outfield: [Vec2::ZERO; MAX_PLAYERS_PER_TEAM],
+            outfield_len: 0,
+        };
         for o in opponents.iter().filter(|o| o.active).take(MAX_PLAYERS_PER_TEAM) {
-            rivals.at[rivals.len] = frame.vec2(o.position + o.velocity * 0.2);
-            rivals.outfield[rivals.len] = !o.is_keeper();
+            let at = frame.vec2(o.position + o.velocity * 0.2);
+            rivals.at[rivals.len] = at;
             rivals.len += 1;
+            if !o.is_keeper() {
+                rivals.outfield[rivals.outfield_len] = at;
+                rivals.outfield_len += 1;
+            }
         }
         rivals
     }
@@ -42,8 +53,8 @@ impl Rivals {
     }
 
     /// Where each outfield one will be, in `opponents`' order.
-    fn outfield_at(&self) -> impl Iterator<Item = Vec2> + '_ {
-        self.at().iter().zip(&self.outfield).filter(|(_, outfield)| **outfield).map(|(&at, _)| at)
+    fn outfield_at(&self) -> &[Vec2] {
+        &self.outfield[..self.outfield_len]
     }
 }
 
@@ -55,7 +66,7 @@ fn free_space(focus: Vec2, time: f32, rivals: &Rivals) -> f32 {
     const SAFE: f32 = 5.0;
     let reach = SPRINT_SPEED * (time - 0.2).max(0.0);
     let mut crowd = 0.0;
-    for at in rivals.outfield_at() {
+    for &at in rivals.outfield_at() {
         let gap = (focus - at).length();
         let left = (gap - reach).max(0.0);
         crowd += 1.0 - left.min(SAFE) / SAFE;
@@ -112,6 +123,34 @@ pub(crate) fn passing_odds(origin: Vec2, target: Vec2, kind: KickKind, rivals: &
         danger += (ball_time - his_time + 0.5).clamp(0.0, 1.0);
     }
     1.0 - danger.clamp(0.0, 1.0)
+}
+
+/// [`passing_odds`] of a ground pass ([`KickKind::ShortPass`]) and of a lofted one
+/// ([`KickKind::HighPass`]) from `origin` to the same `target` at pace 1, in one look at the
+/// opponents: the two share each opponent's place along the line, his meeting point and his time
+/// to it, and each sum of danger is taken in the same order with the same operations as
+/// `passing_odds` takes it (a division by pace 1 and a ground ball's trap of +0 change no
+/// positive time, so they are left out), so both odds are
+/// the same bit for bit. A carrier weighs both for most team-mates at every decision.
+fn ground_and_lofted_odds(origin: Vec2, target: Vec2, rivals: &Rivals) -> (f32, f32) {
+    let line = target - origin;
+    let length2 = line.length_squared().max(1e-6);
+    let (mut ground, mut lofted) = (0.0, 0.4);
+    for &at in rivals.at() {
+        let u = (at - origin).dot(line) / length2;
+        if !(0.0..=1.2).contains(&u) {
+            continue;
+        }
+        let meet = origin + line * u.min(1.0);
+        let his_time = (at.distance(meet) + 1.0) / SPRINT_SPEED;
+        let flight = 0.7 + (meet - origin).length() * u * 0.03;
+        ground += (flight - his_time + 0.5).clamp(0.0, 1.0);
+        if !(0.2..=0.65).contains(&u) {
+            let trap = if u > 0.5 { 2.5 } else { 0.0 };
+            lofted += (flight + trap - his_time + 0.5).clamp(0.0, 1.0);
+        }
+    }
+    (1.0 - ground.clamp(0.0, 1.0), 1.0 - lofted.clamp(0.0, 1.0))
 }
 
 /// The pass a carrier chose: to `mate` (his slot in the team), of `kind`.
@@ -183,13 +222,18 @@ pub(crate) fn choose(
             continue;
         }
         let distance = mate.position.distance(me.position);
+        let from = frame.vec2(me.position);
+        // A ground and a lofted pass are judged at the same point (only a driven one is led).
+        let point = pass_point(from, mate, KickKind::ShortPass, frame);
+        let (short, high) = if distance < 10.0 {
+            (passing_odds(origin, point, KickKind::ShortPass, &rivals, 1.0), 0.0)
+        } else {
+            ground_and_lofted_odds(origin, point, &rivals)
+        };
+        let long =
+            passing_odds(origin, pass_point(from, mate, KickKind::LongPass, frame), KickKind::LongPass, &rivals, 1.0);
         let (mut kind, mut odds) = (KickKind::ShortPass, f32::NEG_INFINITY);
-        for k in [KickKind::ShortPass, KickKind::LongPass, KickKind::HighPass] {
-            let o = if k == KickKind::HighPass && distance < 10.0 {
-                0.0
-            } else {
-                passing_odds(origin, pass_point(frame.vec2(me.position), mate, k, frame), k, &rivals, 1.0)
-            };
+        for (k, o) in [(KickKind::ShortPass, short), (KickKind::LongPass, long), (KickKind::HighPass, high)] {
             if o > odds {
                 (kind, odds) = (k, o);
             }

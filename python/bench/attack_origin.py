@@ -35,7 +35,6 @@ In GRF, with the measuring folder of `README.md` (beside this file) first on PYT
 
 from __future__ import annotations
 
-import argparse
 import collections
 import dataclasses
 import statistics
@@ -78,24 +77,12 @@ def origin(history: list[cases.Observation], shot_at: int) -> Origin:
 
 def origins_in_match(scenario: str, policy: str, seed: int, steps: int) -> list[Origin]:
     """The origins of the shots at our goal in one match."""
-    env = cases.make_env(scenario, seed, builtin_ai=policy == "builtin_ai")
-    agent = cases.make_policy(policy, env, seed)
-    agent.start()
-    first = env.reset()
-    history = [first[0] if isinstance(first, list) else first]
-    found: list[Origin] = []
-    try:
-        for step in range(steps):
-            stepped, _, done, _ = env.step(agent.act(step, history[-1]))
-            after = stepped[0] if isinstance(stepped, list) else stepped
-            if shot_profile.shot(history[-1], after) is not None:
-                found.append(origin(history, len(history) - 1))
-            history.append(after)
-            if done:
-                break
-    finally:
-        env.close()
-    return found
+    history = cases.policy_match(scenario, policy, seed, steps)
+    return [
+        origin(history, k - 1)
+        for k in range(1, len(history))
+        if shot_profile.shot(history[k - 1], history[k]) is not None
+    ]
 
 
 def table(found: list[Origin], matches: int) -> list[str]:
@@ -116,13 +103,7 @@ def table(found: list[Origin], matches: int) -> list[str]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--scenario", default="11_vs_11_stochastic")
-    parser.add_argument("--policy", default="idle", help="idle, random or builtin_ai")
-    parser.add_argument("--matches", type=int, default=10)
-    parser.add_argument("--seed", type=int, default=100, help="the first match's seed")
-    parser.add_argument("--steps", type=int, default=3001, help="steps per match at most")
-    args = parser.parse_args()
+    args = cases.policy_arguments(__doc__.split("\n\n")[0])
     found: list[Origin] = []
     for match in range(args.matches):
         found += origins_in_match(args.scenario, args.policy, args.seed + match, args.steps)

@@ -196,6 +196,38 @@ def match_arguments(description: str, seed: int) -> argparse.Namespace:
     return parser.parse_args()
 
 
+def policy_arguments(description: str) -> argparse.Namespace:
+    """The command line of the tools that trace a policy's full matches: `--scenario`
+    (11_vs_11_stochastic), `--policy` (idle), `--matches` (10), `--seed` (the first match's, 100)
+    and `--steps` (at most 3,001 a match)."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--scenario", default="11_vs_11_stochastic")
+    parser.add_argument("--policy", default="idle", help="idle, random or builtin_ai")
+    parser.add_argument("--matches", type=int, default=10)
+    parser.add_argument("--seed", type=int, default=100, help="the first match's seed")
+    parser.add_argument("--steps", type=int, default=3001, help="steps per match at most")
+    return parser.parse_args()
+
+
+def policy_match(scenario: str, policy: str, seed: int, steps: int) -> list[Observation]:
+    """One match of `policy` (a reference policy's name) in an env seeded `seed`: the reset's
+    observation, then one after each step, at most `steps` steps or to the episode's end."""
+    env = make_env(scenario, seed, builtin_ai=policy == "builtin_ai")
+    agent = make_policy(policy, env, seed)
+    agent.start()
+    first = env.reset()
+    history = [first[0] if isinstance(first, list) else first]
+    try:
+        for step in range(steps):
+            stepped, _, done, _ = env.step(agent.act(step, history[-1]))
+            history.append(stepped[0] if isinstance(stepped, list) else stepped)
+            if done:
+                break
+    finally:
+        env.close()
+    return history
+
+
 def make_policy(name: str, env: FootballEnv, seed: int) -> Policy:
     """The reference's policies by name: random, idle, builtin_ai."""
     if name == "random":

@@ -42,7 +42,6 @@ In GRF, with the measuring folder of `README.md` (beside this file) first on PYT
 
 from __future__ import annotations
 
-import argparse
 import collections
 import dataclasses
 import statistics
@@ -121,20 +120,7 @@ def follow(history: list[cases.Observation], start: int, loser: int) -> Win:
 
 def wins_in_match(scenario: str, policy: str, seed: int, steps: int) -> list[Win]:
     """The balls the right team won in one match."""
-    env = cases.make_env(scenario, seed, builtin_ai=policy == "builtin_ai")
-    agent = cases.make_policy(policy, env, seed)
-    agent.start()
-    first = env.reset()
-    history = [first[0] if isinstance(first, list) else first]
-    try:
-        for step in range(steps):
-            stepped, _, done, _ = env.step(agent.act(step, history[-1]))
-            history.append(stepped[0] if isinstance(stepped, list) else stepped)
-            if done:
-                break
-    finally:
-        env.close()
-    return wins(history)
+    return wins(cases.policy_match(scenario, policy, seed, steps))
 
 
 def table(found: list[Win], matches: int) -> list[str]:
@@ -161,13 +147,7 @@ def table(found: list[Win], matches: int) -> list[str]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--scenario", default="11_vs_11_stochastic")
-    parser.add_argument("--policy", default="idle", help="idle, random or builtin_ai")
-    parser.add_argument("--matches", type=int, default=10)
-    parser.add_argument("--seed", type=int, default=100, help="the first match's seed")
-    parser.add_argument("--steps", type=int, default=3001, help="steps per match at most")
-    args = parser.parse_args()
+    args = cases.policy_arguments(__doc__.split("\n\n")[0])
     found: list[Win] = []
     for match in range(args.matches):
         found += wins_in_match(args.scenario, args.policy, args.seed + match, args.steps)

@@ -185,6 +185,13 @@ pub struct TeamAi {
 /// possession amount then says, so the decision taken about a second from the ball stands.
 const COMMIT_TICKS: u64 = 50;
 
+/// How long (ticks) the man on the ball keeps a decision: GRF's carrier dribbles in touch
+/// animations (a touch every 400-700 ms, measured in GRF 2.10.2, docs/grf-compatibility.md, "the
+/// carrier's run") and re-decides within one only while its touch is still to come, so a pass,
+/// a shot or a new way to run waits for the rest of it to play out (`humanoid.cpp`'s re-queue
+/// test). He decides at once when he gets the ball.
+const CARRIER_DECISION_TICKS: u64 = 30;
+
 /// A player further than this (m) from the ball decides anew only every [`FAR_DECISION_TICKS`]
 /// ([`TeamAi::due`]; docs/grf-compatibility.md, "how often a player decides").
 const FAR_FROM_BALL: f32 = 10.0;
@@ -330,9 +337,10 @@ impl TeamAi {
     /// command as their movement animation ends; measured in GRF 2.10.2 over
     /// 11_vs_11_easy_stochastic's first 1,500 steps, its defence and midfield strategies re-decide a
     /// median 40-50 ms apart within 5 m of the ball, 80 ms within 10 m and 240 ms beyond). A player
-    /// more than [`FAR_FROM_BALL`] off the ball decides every [`FAR_DECISION_TICKS`]; everyone
-    /// nearer, the man on the ball, the team's two quickest to it, the keeper, a man marker
-    /// (`marking`) and everyone at a set piece decide at every team decision, whose interval
+    /// more than [`FAR_FROM_BALL`] off the ball decides every [`FAR_DECISION_TICKS`], and the man
+    /// on the ball when he gets it and then every [`CARRIER_DECISION_TICKS`]; everyone nearer, the
+    /// team's two quickest to it, the keeper, a man marker (`marking`) and everyone at a set piece
+    /// decide at every team decision, whose interval
     /// (50-150 ms by θ) stands in for GRF's shorter ones near the ball (ported too, they made the
     /// drills' duels worse).
     fn due(view: &MatchView, g: usize, analysis: &Analysis, marking: bool, planned: u64) -> bool {
@@ -340,12 +348,16 @@ impl TeamAi {
         if planned == u64::MAX
             || marking
             || view.mode != GameMode::Normal
-            || view.owner == Some(g)
             || p.is_keeper()
             || analysis.chaser.is_some_and(|(c, _, _)| c == g)
             || analysis.second == Some(g)
         {
             return true;
+        }
+        if view.owner == Some(g) {
+            // Decided before he had the ball: now; else once his touch is played out.
+            let since = view.tick.saturating_sub(planned);
+            return since > u64::from(view.owner_ticks) || since >= CARRIER_DECISION_TICKS;
         }
         let ball = view.ball.xy() + view.ball.velocity.truncate() * 0.1;
         let near = (p.position + p.velocity * 0.1).distance(ball);
@@ -386,7 +398,8 @@ impl TeamAi {
                 continue;
             }
             if !Self::due(view, g, &analysis, self.marks[i].is_some(), self.planned[i]) {
-                // Far from the ball: he keeps his plan (its one-off kick and slide already spent).
+                // Far from the ball, or on it with his touch not played out: he keeps his plan
+                // (its one-off kick and slide already spent).
                 continue;
             }
             self.planned[i] = view.tick;
@@ -532,5 +545,26 @@ mod tests {
         m.mode = GameMode::FreeKick;
         let v = test_view(&m);
         assert!(TeamAi::due(&v, forward, &analysis, false, 99));
+    }
+
+    #[test]
+    fn the_man_on_the_ball_decides_when_he_gets_it_then_once_his_touch_is_played_out() {
+        let mut m = match_in_play();
+        let carrier = 1;
+        m.owner = Some(carrier);
+        // He has had the ball for 50 ms.
+        m.owner_ticks = 5;
+        let v = test_view(&m);
+        let analysis = prediction::analyse(&v, Side::Left, &Difficulty::new(1.0));
+        // Last decided before the ball was his (60 ms ago): now.
+        assert!(TeamAi::due(&v, carrier, &analysis, false, 94));
+        // Decided since he got it: he keeps that for CARRIER_DECISION_TICKS.
+        assert!(!TeamAi::due(&v, carrier, &analysis, false, 96));
+        m.owner_ticks = 40;
+        let v = test_view(&m);
+        assert!(!TeamAi::due(&v, carrier, &analysis, false, 100 - CARRIER_DECISION_TICKS + 1));
+        assert!(TeamAi::due(&v, carrier, &analysis, false, 100 - CARRIER_DECISION_TICKS));
+        // His team-mate next to him still decides at every team decision.
+        assert!(TeamAi::due(&v, 2, &analysis, false, 99));
     }
 }

@@ -153,15 +153,9 @@ impl Match {
     }
 
     fn apply_kicks_and_tackles(&mut self) {
-        for g in 0..self.players.len() {
-            if !self.players[g].active {
-                continue;
-            }
-            if self.inputs[g].kick.is_none() && !self.inputs[g].slide && self.players[g].pending_kick.is_none() {
-                // No kick asked for or winding up and no slide: nothing below applies (most
-                // players, most ticks), and the input is not copied.
-                continue;
-            }
+        let mut from = 0;
+        while let Some(g) = self.next_kick_or_tackle(from) {
+            from = g + 1;
             let input = self.inputs[g];
             if let Some(kick) = input.kick {
                 // Only the player on the ball, or an agent's player at a loose ball not yet his
@@ -213,6 +207,19 @@ impl Match {
                 self.start_slide(g, input.velocity);
             }
         }
+    }
+
+    /// The first active player from `from` on who asks for a kick or a slide or winds up a kick:
+    /// the only ones [`Match::apply_kicks_and_tackles`] has anything to do for (a few a tick). The
+    /// players and their inputs walked together: indexing both by player, the bounds checks and
+    /// reloads of the loop over everyone cost as much as the rest of that function.
+    fn next_kick_or_tackle(&self, from: usize) -> Option<usize> {
+        let players = self.players.get(from..)?;
+        let inputs = self.inputs.get(from..)?;
+        let asks = |(p, input): (&crate::player::Player, &super::PlayerInput)| {
+            p.active && (input.kick.is_some() || input.slide || p.pending_kick.is_some())
+        };
+        players.iter().zip(inputs).position(asks).map(|k| from + k)
     }
 
     /// Whether `side` is the team with the ball: it has it at a player's feet, or the ball is loose

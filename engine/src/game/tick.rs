@@ -5,10 +5,10 @@ use glam::Vec2;
 use crate::geometry::Side;
 
 use super::kick::{launch, pass_choice};
-use super::{GOAL_DEAD_TICKS, GameMode, KickKind, Match, OUT_DEAD_TICKS, Phase};
+use super::{GOAL_DEAD_TICKS, GameMode, KickKind, Match, OUT_DEAD_TICKS, Phase, PlayerInput};
 use crate::game::input::Kick;
 use crate::physics::{MotionLimits, Stride, Strides, TICK_SECONDS, separate_players};
-use crate::player::DRIBBLE_SPEED;
+use crate::player::{DRIBBLE_SPEED, Player};
 use crate::rules::{self, Restart, Stoppage};
 use crate::stats::Event;
 
@@ -154,7 +154,11 @@ impl Match {
 
     fn apply_kicks_and_tackles(&mut self) {
         let mut from = 0;
-        while let Some(g) = self.next_kick_or_tackle(from) {
+        // Only a player asking for a kick or a slide or winding up a kick has anything to do here.
+        let kicks_or_tackles = |(p, input): (&Player, &PlayerInput)| {
+            p.active && (input.kick.is_some() || input.slide || p.pending_kick.is_some())
+        };
+        while let Some(g) = first_from(from, &self.players, &self.inputs, kicks_or_tackles) {
             from = g + 1;
             let input = self.inputs[g];
             if let Some(kick) = input.kick {
@@ -207,19 +211,6 @@ impl Match {
                 self.start_slide(g, input.velocity);
             }
         }
-    }
-
-    /// The first active player from `from` on who asks for a kick or a slide or winds up a kick:
-    /// the only ones [`Match::apply_kicks_and_tackles`] has anything to do for (a few a tick). The
-    /// players and their inputs walked together: indexing both by player, the bounds checks and
-    /// reloads of the loop over everyone cost as much as the rest of that function.
-    fn next_kick_or_tackle(&self, from: usize) -> Option<usize> {
-        let players = self.players.get(from..)?;
-        let inputs = self.inputs.get(from..)?;
-        let asks = |(p, input): (&crate::player::Player, &super::PlayerInput)| {
-            p.active && (input.kick.is_some() || input.slide || p.pending_kick.is_some())
-        };
-        players.iter().zip(inputs).position(asks).map(|k| from + k)
     }
 
     /// Whether `side` is the team with the ball: it has it at a player's feet, or the ball is loose
@@ -371,7 +362,12 @@ impl Match {
         let mut aims = [None; MAX_PLAYERS];
         let mut controls = [None; MAX_PLAYERS];
         self.refresh_magnet();
-        for g in 0..self.players.len().min(MAX_PLAYERS) {
+        // Only a player winding up a kick or an agent's player has an aim or a control step.
+        let mut from = 0;
+        let winds_up_or_agents = |(p, &agent): (&Player, &bool)| agent || p.pending_kick.is_some();
+        let n = self.players.len().min(MAX_PLAYERS);
+        while let Some(g) = first_from(from, &self.players[..n], &self.agent_driven, winds_up_or_agents) {
+            from = g + 1;
             if let Some((kick, _)) = self.players[g].pending_kick {
                 aims[g] = Some(self.kick_target(g, &kick) - self.players[g].position);
             } else if self.agent_driven[g] {
@@ -586,4 +582,12 @@ impl Match {
         self.mode = GameMode::Normal;
         self.set_piece_ticks = 0;
     }
+}
+
+/// The first index from `from` on at which `wanted` holds for the items of `a` and `b` there: for
+/// the per-player passes of the tick that have something to do for a few players only. Walked as
+/// zipped slices, a player passed over costs a few instructions; indexed by player, each was
+/// bounds-checked and his vectors reloaded, as much as the rest of such a pass.
+fn first_from<A, B>(from: usize, a: &[A], b: &[B], wanted: impl FnMut((&A, &B)) -> bool) -> Option<usize> {
+    a.get(from..)?.iter().zip(b.get(from..)?).position(wanted).map(|k| from + k)
 }

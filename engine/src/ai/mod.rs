@@ -263,9 +263,15 @@ impl TeamAi {
             input.velocity = velocity;
             input.look = plan.look;
             input.dribble = plan.dribble;
-            input.kick = plan.kick.take();
             input.slide = std::mem::take(&mut plan.slide);
-            input.first_time = plan.first_time;
+            // The kicks (rarely any) copied only where there is one to copy or to clear: copied
+            // whole every tick, each went through the stack.
+            if plan.kick.is_some() || input.kick.is_some() {
+                input.kick = plan.kick.take();
+            }
+            if plan.first_time.is_some() || input.first_time.is_some() {
+                input.first_time = plan.first_time;
+            }
         }
     }
 

@@ -5,10 +5,10 @@ use glam::Vec2;
 use crate::geometry::Side;
 
 use super::kick::{launch, pass_choice};
-use super::{GOAL_DEAD_TICKS, GameMode, KickKind, Match, OUT_DEAD_TICKS, Phase};
+use super::{GOAL_DEAD_TICKS, GameMode, KickKind, Match, OUT_DEAD_TICKS, Phase, PlayerInput};
 use crate::game::input::Kick;
 use crate::physics::{MotionLimits, Stride, Strides, TICK_SECONDS, separate_players};
-use crate::player::DRIBBLE_SPEED;
+use crate::player::{DRIBBLE_SPEED, Player};
 use crate::rules::{self, Restart, Stoppage};
 use crate::stats::Event;
 
@@ -153,15 +153,13 @@ impl Match {
     }
 
     fn apply_kicks_and_tackles(&mut self) {
-        for g in 0..self.players.len() {
-            if !self.players[g].active {
-                continue;
-            }
-            if self.inputs[g].kick.is_none() && !self.inputs[g].slide && self.players[g].pending_kick.is_none() {
-                // No kick asked for or winding up and no slide: nothing below applies (most
-                // players, most ticks), and the input is not copied.
-                continue;
-            }
+        let mut from = 0;
+        // Only a player asking for a kick or a slide or winding up a kick has anything to do here.
+        let kicks_or_tackles = |(p, input): (&Player, &PlayerInput)| {
+            p.active && (input.kick.is_some() || input.slide || p.pending_kick.is_some())
+        };
+        while let Some(g) = first_from(from, &self.players, &self.inputs, kicks_or_tackles) {
+            from = g + 1;
             let input = self.inputs[g];
             if let Some(kick) = input.kick {
                 // Only the player on the ball, or an agent's player at a loose ball not yet his
@@ -364,7 +362,12 @@ impl Match {
         let mut aims = [None; MAX_PLAYERS];
         let mut controls = [None; MAX_PLAYERS];
         self.refresh_magnet();
-        for g in 0..self.players.len().min(MAX_PLAYERS) {
+        // Only a player winding up a kick or an agent's player has an aim or a control step.
+        let mut from = 0;
+        let winds_up_or_agents = |(p, &agent): (&Player, &bool)| agent || p.pending_kick.is_some();
+        let n = self.players.len().min(MAX_PLAYERS);
+        while let Some(g) = first_from(from, &self.players[..n], &self.agent_driven, winds_up_or_agents) {
+            from = g + 1;
             if let Some((kick, _)) = self.players[g].pending_kick {
                 aims[g] = Some(self.kick_target(g, &kick) - self.players[g].position);
             } else if self.agent_driven[g] {
@@ -579,4 +582,12 @@ impl Match {
         self.mode = GameMode::Normal;
         self.set_piece_ticks = 0;
     }
+}
+
+/// The first index from `from` on at which `wanted` holds for the items of `a` and `b` there: for
+/// the per-player passes of the tick that have something to do for a few players only. Walked as
+/// zipped slices, a player passed over costs a few instructions; indexed by player, each was
+/// bounds-checked and his vectors reloaded, as much as the rest of such a pass.
+fn first_from<A, B>(from: usize, a: &[A], b: &[B], wanted: impl FnMut((&A, &B)) -> bool) -> Option<usize> {
+    a.get(from..)?.iter().zip(b.get(from..)?).position(wanted).map(|k| from + k)
 }

@@ -26,13 +26,20 @@ pub(crate) struct Contacts {
     len: usize,
     /// The players (indices) in order along the pitch as the last tick's contact scan sorted them:
     /// the next scan starts from it, nearly sorted already. It changes how fast the scan is, never
-    /// what it finds, so it is scratch like the rest.
-    pub(crate) along: [u8; 2 * MAX_PLAYERS_PER_TEAM],
+    /// what it finds, so it is scratch like the rest. Its first `along_players` are the match's
+    /// players, the rest empty slots ([`Contacts::order`]).
+    along: [u8; 2 * MAX_PLAYERS_PER_TEAM],
+    along_players: usize,
 }
 
 impl Default for Contacts {
     fn default() -> Self {
-        Contacts { list: [Contact::default(); CAPACITY], len: 0, along: std::array::from_fn(|k| k as u8) }
+        Contacts {
+            list: [Contact::default(); CAPACITY],
+            len: 0,
+            along: std::array::from_fn(|k| k as u8),
+            along_players: 2 * MAX_PLAYERS_PER_TEAM,
+        }
     }
 }
 
@@ -48,6 +55,18 @@ impl Contacts {
             self.list[self.len] = contact;
             self.len += 1;
         }
+    }
+
+    /// The last order along the pitch of a match's `n` players (at most 22): each of `0..n` once.
+    /// Sorting and scanning just these, not every slot a match could hold, spares a drill of a
+    /// few players a pass over twenty empty ones each tick. An order kept for another number of
+    /// players starts again from `0..n`.
+    pub(crate) fn order(&mut self, n: usize) -> &mut [u8] {
+        if n != self.along_players {
+            self.along = std::array::from_fn(|k| k as u8);
+            self.along_players = n;
+        }
+        &mut self.along[..n]
     }
 
     /// This tick's contacts.

@@ -127,7 +127,7 @@ pub(crate) fn separate_players(players: &mut [Player], owner: Option<usize>, con
     } else {
         let mut bodies = Bodies::of(players);
         // Rows before the first that holds a contact hold none: start there.
-        let first = bodies.first_row_with_contact(players, &mut contacts.along).unwrap_or(n);
+        let first = bodies.first_row_with_contact(players, contacts.order(n)).unwrap_or(n);
         for i in first..n {
             if players[i].active && bodies.may_touch_later(i, n) {
                 let moved = resolve_contacts(players, i, owner, contacts);
@@ -177,16 +177,20 @@ impl Bodies {
     }
 
     /// The first row (player `i` against everyone after him) that may hold a contact,
-    /// as [`Bodies::may_touch_later`] judges each row, without scanning every row: the active
+    /// as [`Bodies::may_touch_later`] judges each row, without scanning every row: the match's
     /// players sorted along the pitch (`along`, last tick's order, kept for the next), each is
     /// compared only with those less than a contact's distance further along. A pair that far
     /// apart in x is at least as far apart in the squared distance as the row scan computes it
     /// (rounding is monotonic), so no pair the row scan finds is missed. With any active position
     /// not finite, every row is scanned (`Some(0)`).
-    fn first_row_with_contact(&self, players: &[Player], along: &mut [u8; MAX_PLAYERS]) -> Option<usize> {
+    ///
+    /// Never inlined: inlined into the tick, its loops cost 2 % of a full match's step more (the
+    /// tick's values it keeps in registers crowd them out).
+    #[inline(never)]
+    fn first_row_with_contact(&self, players: &[Player], along: &mut [u8]) -> Option<usize> {
         let x = |k: u8| self.x[k as usize];
-        // Insertion sort: players move centimetres a tick, so this is a pass with few swaps. The
-        // slots of absent and inactive players are at infinity, at the end.
+        // Insertion sort: players move centimetres a tick, so this is a pass with few swaps.
+        // Inactive players are at infinity, at the end.
         for k in 1..along.len() {
             let a = along[k];
             let mut m = k;
@@ -198,12 +202,14 @@ impl Bodies {
         }
         let mut first = None::<usize>;
         for (k, &a) in along.iter().enumerate() {
-            if !players.get(a as usize).is_some_and(|p| p.active) {
-                continue;
-            }
             let (xa, ya) = (x(a), self.y[a as usize]);
             if !xa.is_finite() || !ya.is_finite() {
-                return Some(0);
+                // Inactive players stand at infinity (tested first: it spares the look-up of every
+                // player's flag); an active one off the map is a position gone wrong.
+                if players[a as usize].active {
+                    return Some(0);
+                }
+                continue;
             }
             for &b in &along[k + 1..] {
                 let dx = x(b) - xa;

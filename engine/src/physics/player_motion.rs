@@ -159,9 +159,11 @@ impl Bodies {
     /// The positions of `players` (at most [`MAX_PLAYERS`]).
     fn of(players: &[Player]) -> Bodies {
         let mut bodies = Bodies { x: [f32::INFINITY; SLOTS], y: [f32::INFINITY; SLOTS] };
-        for (k, p) in players.iter().enumerate().filter(|(_, p)| p.active) {
-            bodies.x[k] = p.position.x;
-            bodies.y[k] = p.position.y;
+        // The slots walked with the players (indexed by player, each store was bounds-checked).
+        for ((x, y), p) in bodies.x.iter_mut().zip(&mut bodies.y).zip(players) {
+            if p.active {
+                (*x, *y) = (p.position.x, p.position.y);
+            }
         }
         bodies
     }

@@ -83,6 +83,13 @@ impl Match {
         p.skill(stat, self.theta(g))
     }
 
+    /// `q`'s tackling skill after difficulty and fatigue: worked out in [`Match::challenge`] only
+    /// for a slide or a trip (for every opponent every tick, its θ look-up was a tenth of the
+    /// loop).
+    fn tackling(&self, q: usize) -> f32 {
+        self.skill_of(q, self.players[q].attributes.tackling)
+    }
+
     /// Opponents near the owner try to take the ball: standing challenges win it or trip the
     /// carrier (a foul); a slide's first contact is judged for a foul (Law 12, [`rules::fouls`]).
     fn challenge(&mut self, owner: usize) {
@@ -100,8 +107,8 @@ impl Match {
             let d2 = p.position.distance_squared(ball);
             let sliding = p.is_sliding();
             let body = p.position.distance_squared(self.players[owner].position) < BODY_CONTACT * BODY_CONTACT;
-            let tackling = self.skill_of(q, p.attributes.tackling);
             if sliding && (d2 < SLIDE_REACH * SLIDE_REACH || body) {
+                let tackling = self.tackling(q);
                 let roll = self.rng.unit();
                 let severity = fouls::sliding_severity(&self.players[q], &self.players[owner], ball, tackling, roll);
                 self.tackled(owner, q);
@@ -163,7 +170,7 @@ impl Match {
             if d2 >= TACKLE_RANGE * TACKLE_RANGE {
                 continue;
             }
-            let trip = fouls::trip_chance(&self.players[q], &self.players[owner], tackling);
+            let trip = fouls::trip_chance(&self.players[q], &self.players[owner], self.tackling(q));
             if self.rng.unit() < trip {
                 // A trip: the carrier stumbles and may lose the ball; the referee plays advantage.
                 let severity = fouls::standing_severity(&self.players[q], &self.players[owner], self.rng.unit());

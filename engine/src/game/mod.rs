@@ -19,7 +19,7 @@ use std::sync::Arc;
 pub use action::{Action, ActionSet, DIRECTIONS};
 pub use input::{Kick, KickKind, KickTarget, PlayerInput};
 pub use mode::GameMode;
-pub(crate) use possession::duel_likeliness;
+pub(crate) use steal::duel_likeliness;
 
 use crate::ai::TeamAi;
 use crate::geometry::coords::{ball_start_to_world, formation_to_world};

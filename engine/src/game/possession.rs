@@ -3,6 +3,7 @@
 
 use glam::Vec3;
 
+use super::steal::duel_likeliness;
 use super::{GameMode, Match, POSSESSION_REACH, interfere};
 use crate::geometry::pitch::{BALL_RADIUS, in_penalty_area};
 use crate::physics::TICK_SECONDS;
@@ -545,20 +546,11 @@ fn resting_at(ball: &crate::physics::Ball, wanted: glam::Vec2) -> bool {
     ball.velocity.length_squared() < 0.09 && wanted.length_squared() < 0.09
 }
 
-/// How likely a challenger at `challenger` gets to the ball at `ball` played by the carrier at
-/// `carrier`, GRF's duel likeliness 1 − (dot·0.5 + 0.5) in [0, 1]: 0 when the carrier stands
-/// straight between him and the ball, 1 when he faces the carrier across the ball.
-pub(crate) fn duel_likeliness(challenger: glam::Vec2, carrier: glam::Vec2, ball: glam::Vec2) -> f32 {
-    let from_ball = (challenger - ball).normalize_or_zero();
-    let carrier_side = (carrier - ball).normalize_or_zero();
-    1.0 - (from_ball.dot(carrier_side) * 0.5 + 0.5)
-}
-
 #[cfg(test)]
 mod tests {
     use glam::Vec2;
 
-    use super::{closest_approach, duel_likeliness};
+    use super::closest_approach;
 
     #[test]
     fn a_ball_is_as_near_as_it_passes_within_the_next_fifth_of_a_second() {
@@ -609,16 +601,5 @@ mod tests {
         let close = goals_past_the_keeper(6.0, 25.0, 0.6);
         assert!((4..=36).contains(&close), "{close} of 40");
         assert!(goals_past_the_keeper(6.0, 25.0, 2.5) > 30, "a shot 2.5 m wide of a standing keeper beats him");
-    }
-
-    #[test]
-    fn a_challenger_behind_the_carrier_cannot_get_to_the_ball() {
-        // Carrier at the origin, the ball half a metre ahead of him along +x.
-        let (carrier, ball) = (Vec2::ZERO, Vec2::new(0.5, 0.0));
-        assert!(duel_likeliness(Vec2::new(-0.7, 0.0), carrier, ball) < 0.01);
-        assert!(duel_likeliness(Vec2::new(1.3, 0.0), carrier, ball) > 0.99);
-        // Round at his side, level with the ball: a fair chance.
-        let beside = duel_likeliness(Vec2::new(0.45, 0.6), carrier, ball);
-        assert!((0.3..0.7).contains(&beside), "{beside}");
     }
 }

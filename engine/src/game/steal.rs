@@ -10,7 +10,7 @@
 //! within 0.1-0.2 s in 76 % of those approaches, 19 a match; touchline's standing tackle, the
 //! only way it had, won 28 %.
 
-use super::{Match, possession};
+use super::Match;
 use crate::geometry::pitch::in_penalty_area;
 
 /// Reach (m) of a ball-control touch on a carrier's ball: from where the challenger's body is
@@ -56,7 +56,7 @@ impl Match {
         let takes = foot.distance_squared(ball) < REACH * REACH
             && p.position.distance_squared(ball) < carrier.distance_squared(ball)
             && (self.ball.velocity.truncate() - p.velocity).length_squared() < RELATIVE_SPEED * RELATIVE_SPEED
-            && possession::duel_likeliness(p.position, carrier, ball) >= MIN_LIKELINESS;
+            && duel_likeliness(p.position, carrier, ball) >= MIN_LIKELINESS;
         if takes && p.is_keeper() && in_penalty_area(p.position.x, p.position.y, -p.side.attack_sign()) {
             self.claimed(owner, q);
         } else if takes {
@@ -65,6 +65,15 @@ impl Match {
         }
         takes
     }
+}
+
+/// How likely a challenger at `challenger` gets to the ball at `ball` played by the carrier at
+/// `carrier`, GRF's duel likeliness 1 − (dot·0.5 + 0.5) in [0, 1]: 0 when the carrier stands
+/// straight between him and the ball, 1 when he faces the carrier across the ball.
+pub(crate) fn duel_likeliness(challenger: glam::Vec2, carrier: glam::Vec2, ball: glam::Vec2) -> f32 {
+    let from_ball = (challenger - ball).normalize_or_zero();
+    let carrier_side = (carrier - ball).normalize_or_zero();
+    1.0 - (from_ball.dot(carrier_side) * 0.5 + 0.5)
 }
 
 #[cfg(test)]
@@ -134,5 +143,16 @@ mod tests {
         assert!(!approach(Vec2::new(1.1, 0.4)).steal(0));
         // Behind the carrier, the carrier's body between him and the ball.
         assert!(!approach(Vec2::new(-0.6, 0.0)).steal(0));
+    }
+
+    #[test]
+    fn a_challenger_behind_the_carrier_cannot_get_to_the_ball() {
+        // Carrier at the origin, the ball half a metre ahead of him along +x.
+        let (carrier, ball) = (Vec2::ZERO, Vec2::new(0.5, 0.0));
+        assert!(duel_likeliness(Vec2::new(-0.7, 0.0), carrier, ball) < 0.01);
+        assert!(duel_likeliness(Vec2::new(1.3, 0.0), carrier, ball) > 0.99);
+        // Round at his side, level with the ball: a fair chance.
+        let beside = duel_likeliness(Vec2::new(0.45, 0.6), carrier, ball);
+        assert!((0.3..0.7).contains(&beside), "{beside}");
     }
 }

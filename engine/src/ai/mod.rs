@@ -186,10 +186,10 @@ pub struct TeamAi {
 const COMMIT_TICKS: u64 = 50;
 
 /// How long (ticks) the man on the ball keeps a decision: GRF's carrier dribbles in touch
-/// animations (a touch every 400-700 ms, measured in GRF 2.10.2, docs/grf-compatibility.md, "the
-/// carrier's run") and re-decides within one only while its touch is still to come, so a pass,
-/// a shot or a new way to run waits for the rest of it to play out (`humanoid.cpp`'s re-queue
-/// test). He decides at once when he gets the ball.
+/// animations (a touch every 400-700 ms, measured in GRF 2.10.2: docs/grf-compatibility.md, "the
+/// man on the ball decides") and re-decides within one only while its touch is still to come,
+/// so a pass, a shot or a new way to run waits for the rest of it to play out (`humanoid.cpp`'s
+/// re-queue test). He decides at once when he gets the ball.
 const CARRIER_DECISION_TICKS: u64 = 30;
 
 /// A player further than this (m) from the ball decides anew only every [`FAR_DECISION_TICKS`]

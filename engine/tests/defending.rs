@@ -3,8 +3,9 @@
 //! out at a carrier; in his own area he takes a dribbled ball with his hands, nobody may challenge
 //! him while he holds it, and, alone, he clears it the way he faces; two bodies on one spot part
 //! instead of drifting along together; a keeper meets a contested loose ball with a first-time
-//! clearance; an agent walking away from the ball takes it with him; a defender racing back at an
-//! idle carrier takes the ball as soon as GRF's does.
+//! clearance and an uncontested one with a first-time pass upfield; an agent walking away from the
+//! ball takes it with him; a defender racing back at an idle carrier takes the ball as soon as
+//! GRF's does.
 
 mod common;
 
@@ -322,6 +323,34 @@ fn a_keeper_who_decides_to_clear_first_time_clears_though_he_has_time_by_the_tou
     }
     let speed = struck.expect("their keeper never touched the ball");
     assert!(speed > 15.0, "the clearance left at {speed:.1} m/s");
+}
+
+#[test]
+fn a_keeper_coming_out_for_an_uncontested_ball_plays_it_first_time_upfield() {
+    // academy_run_to_score_with_keeper's random agent shoots from halfway and the ball rolls into
+    // their area with nobody of ours near. GRF's keeper runs out and passes it first time,
+    // 25-31 m/s, to a team-mate upfield, and never shows as its owner (40 episodes, none ended
+    // with him holding the ball): with no opponent near as quick to it (a possession amount of
+    // 3.4 or more) he does not ask for his hands.
+    let mut env = common::builtin_env("11_vs_11_stochastic", 1);
+    let game = env.game_mut();
+    for i in 1..11 {
+        game.place_player(Side::Right, i, glam::Vec2::new(5.0, -30.0 + 6.0 * i as f32));
+        game.place_player(Side::Left, i, glam::Vec2::new(-20.0, -30.0 + 6.0 * i as f32));
+    }
+    game.place_player(Side::Right, 0, glam::Vec2::new(50.0, 0.0));
+    game.place_ball(glam::Vec3::new(28.0, 2.0, 0.11), glam::Vec3::new(9.0, 0.0, 0.0), Some((Side::Left, 10)));
+    let mut struck = None;
+    for tick in 0..300 {
+        game.tick();
+        assert_ne!(game.owner(), Some((Side::Right, 0)), "tick {tick}: their keeper took the ball");
+        if game.last_touch() == Some((Side::Right, 0)) {
+            struck = Some(game.ball().velocity);
+            break;
+        }
+    }
+    let v = struck.expect("their keeper never touched the ball");
+    assert!(v.truncate().length() > 15.0 && v.x < 0.0, "played upfield first time: {v}");
 }
 
 /// The step at which an idle episode of `scenario` with engine seed `seed` ends, and whether it

@@ -5,8 +5,9 @@
 
 use glam::Vec2;
 
+use super::clearance::TIME_MARGIN;
 use super::pass_choice::{self, Rivals, passing_odds};
-use super::{Analysis, Difficulty, MatchView, Plan};
+use super::{Analysis, Difficulty, MatchView, Plan, goalkeeper};
 use crate::game::{Kick, KickKind, KickTarget};
 use crate::geometry::pitch::{HALF_LENGTH, HALF_WIDTH};
 use crate::player::{Player, nearest_distance};
@@ -78,6 +79,13 @@ const SHOT_AIM: f32 = 3.5;
 /// needs under this long to reach it (s); a pass or a shot decided then is struck with his
 /// first touch, so he never shows as the ball's owner.
 const DECIDE_WITHIN: f32 = 1.0;
+/// A ball crossing the keeper's goal line within this long (s) is a shot he saves rather than a
+/// ball he plays: GRF's keeper counts a ball bound for goal by its first 800 ms.
+const BOUND_FOR_GOAL: f32 = 0.8;
+/// A keeper plays a loose ball with his feet only while his possession amount (the opponents'
+/// time to the ball over his, each plus [`TIME_MARGIN`]) is at least this; below it GRF's keeper
+/// asks for his hands first.
+const KEEPER_FEET: f32 = 3.4;
 /// Ticks a carrier who just got the ball runs with it before he thinks of a pass or shot (unless
 /// pressed).
 const FIRST_TOUCH_TICKS: u32 = 12;
@@ -85,7 +93,17 @@ const FIRST_TOUCH_TICKS: u32 = 12;
 /// The kick `g`, the first of his team to a loose ball and less than [`DECIDE_WITHIN`] from it,
 /// strikes with his first touch: the pass or shot he would choose with the ball at his feet
 /// (GRF 2.10's on-the-ball AI decides before the touch). `None` when he would rather run with
-/// it, or is not the one to play it. Keepers have their own rule (`clearance`).
+/// it, or is not the one to play it.
+///
+/// A keeper decides so too when he is sent for a loose ball (the match's first to it and before
+/// his outfield players) that is not bound for his goal ([`BOUND_FOR_GOAL`]) and that no opponent
+/// contests ([`KEEPER_FEET`]). GRF's keeper asks for his hands only for a contested ball, and
+/// otherwise plays the on-the-ball commands of any designated player: coming out for a ball
+/// rolling into his area, he passes it first time to a team-mate placed better (measured in GRF
+/// 2.10.2, academy_run_to_score_with_keeper, random agent: in 40 episodes he never held such a
+/// ball; docs/grf-compatibility.md, "the keeper plays an uncontested loose ball with his feet").
+/// With nobody to pass to he controls it as before; his panic clearance comes first
+/// (`clearance`).
 pub(crate) fn first_touch(
     view: &MatchView,
     g: usize,
@@ -93,12 +111,25 @@ pub(crate) fn first_touch(
     difficulty: &Difficulty,
     rng: &mut MatchRng,
 ) -> Option<Kick> {
-    if view.owner.is_some() || view.players[g].is_keeper() {
+    if view.owner.is_some() {
         return None;
     }
-    match analysis.chaser {
-        Some((chaser, t, _)) if chaser == g && t < DECIDE_WITHIN => {}
-        _ => return None,
+    if view.players[g].is_keeper() {
+        let (t, _) = analysis.path.intercept(view.players[g].position, view.players[g].max_speed, 1.0);
+        let sent = t < DECIDE_WITHIN
+            && goalkeeper::sent_for_the_ball(t, analysis)
+            && analysis.chaser.is_none_or(|(_, mate, _)| t <= mate);
+        // GRF's keeper reaches for his hands while an opponent is anywhere near as quick to the
+        // ball: a possession amount under 3.4.
+        let uncontested = analysis.opponent_time + TIME_MARGIN >= KEEPER_FEET * (t + TIME_MARGIN);
+        if !sent || !uncontested || goalkeeper::into_goal(analysis).is_some_and(|(t, _)| t <= BOUND_FOR_GOAL) {
+            return None;
+        }
+    } else {
+        match analysis.chaser {
+            Some((chaser, t, _)) if chaser == g && t < DECIDE_WITHIN => {}
+            _ => return None,
+        }
     }
     // As if he had it, past the first touch a carrier takes on receiving it.
     let on_the_ball = MatchView { owner: Some(g), owner_ticks: FIRST_TOUCH_TICKS, ..*view };

@@ -22,7 +22,7 @@ use crate::geometry::pitch::HALF_LENGTH;
 /// GRF's AI decides what to do on the ball once the player needs less than this to reach it (s).
 const DECIDE_WITHIN: f32 = 1.0;
 /// Added to both times to the ball in the possession amount (s), GRF's 200 ms.
-const TIME_MARGIN: f32 = 0.2;
+pub(crate) const TIME_MARGIN: f32 = 0.2;
 /// A keeper clears first time while his possession amount is below this.
 const KEEPER_PANIC: f32 = 3.0;
 /// How far the clearance is aimed (m): GRF's high pass at input power 0.7 reaches 0.7 × 60 m.

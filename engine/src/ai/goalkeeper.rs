@@ -64,20 +64,13 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
 
     // A ball on its way into the goal: get across to where it crosses the line.
     if view.owner.is_none() {
-        for (k, p) in analysis.path.at().iter().enumerate() {
-            let p_t = frame.vec2(p.truncate());
-            if p_t.x < -HALF_LENGTH + 1.0 {
-                if p_t.y.abs() < GOAL_HALF_WIDTH + 1.0 && p.z < 3.0 {
-                    let t = 0.1 * (k + 1) as f32;
-                    let target_t = Vec2::new(-HALF_LENGTH + 0.8, p_t.y.clamp(-GOAL_HALF_WIDTH, GOAL_HALF_WIDTH));
-                    let target = frame.vec2(target_t);
-                    let lateral = (target_t - me_t).length();
-                    // Too far to step across in time: dive.
-                    let slide = lateral > 1.2 && t < 0.6;
-                    return Plan { slide, ..Plan::go(target, me.max_speed, ball - me.position) };
-                }
-                break;
-            }
+        if let Some((t, crossing_t)) = into_goal(analysis) {
+            let target_t = Vec2::new(-HALF_LENGTH + 0.8, crossing_t.y.clamp(-GOAL_HALF_WIDTH, GOAL_HALF_WIDTH));
+            let target = frame.vec2(target_t);
+            let lateral = (target_t - me_t).length();
+            // Too far to step across in time: dive.
+            let slide = lateral > 1.2 && t < 0.6;
+            return Plan { slide, ..Plan::go(target, me.max_speed, ball - me.position) };
         }
         // A loose ball in the area that he reaches before any opponent: come and claim it.
         if let Some((_, _, meet)) = analysis.chaser {
@@ -148,6 +141,17 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
     Plan::go(target, speed, ball - me.position)
 }
 
+/// When (s) and where (team frame, m) the loose ball's predicted path crosses the deciding team's
+/// own goal line between the posts (a metre's grace each side) and under 3 m: a ball on its way
+/// into the goal. `None` when it crosses wide, high or not at all.
+pub(crate) fn into_goal(analysis: &Analysis) -> Option<(f32, Vec2)> {
+    let frame = analysis.frame;
+    let (k, p) =
+        analysis.path.at().iter().enumerate().find(|(_, p)| frame.vec2(p.truncate()).x < -HALF_LENGTH + 1.0)?;
+    let p_t = frame.vec2(p.truncate());
+    (p_t.y.abs() < GOAL_HALF_WIDTH + 1.0 && p.z < 3.0).then_some((SAMPLE_DT * (k + 1) as f32, p_t))
+}
+
 /// Whether a time to the ball of `t` (s) beats `other`'s by the `(pad, share)` margin: (t + pad) <
 /// share × (other + pad).
 fn clearly_quicker(t: f32, other: f32, (pad, share): (f32, f32)) -> bool {
@@ -158,7 +162,7 @@ fn clearly_quicker(t: f32, other: f32, (pad, share): (f32, f32)) -> bool {
 /// ahead of every opponent: [`MATCH_MARGIN`] quicker than the quickest of them. GRF's keeper
 /// plays the ball, or runs for it like an outfielder, only as the match's designated player; a
 /// keeper merely level with an opponent leaves it (GRF: the side already sent stays sent).
-fn sent_for_the_ball(t: f32, analysis: &Analysis) -> bool {
+pub(crate) fn sent_for_the_ball(t: f32, analysis: &Analysis) -> bool {
     clearly_quicker(t, analysis.opponent_time, MATCH_MARGIN)
 }
 

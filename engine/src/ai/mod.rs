@@ -462,6 +462,11 @@ impl TeamAi {
                     (Some(_), Some(_)) => {}
                     (None, None) => self.committed[i] = None,
                 }
+                if p.is_keeper() && plan.first_time.is_some() {
+                    // A keeper who means to play the ball first time runs onto it, as GRF's to-ball
+                    // movement does, rather than slowing to gather it.
+                    plan.run_through = true;
+                }
             } else if let Some(c) = self.committed.get_mut(i) {
                 *c = None;
             }

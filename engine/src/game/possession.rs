@@ -7,6 +7,7 @@ use super::steal::duel_likeliness;
 use super::{GameMode, Match, POSSESSION_REACH, interfere};
 use crate::geometry::pitch::{BALL_RADIUS, in_penalty_area};
 use crate::physics::TICK_SECONDS;
+use crate::player::DRIBBLE_SPEED;
 use crate::rules::{self, Stoppage, fouls};
 use crate::stats::Event;
 
@@ -432,6 +433,11 @@ impl Match {
         let Some((g, keeper_hands)) = best else { return };
         let p = &self.players[g];
         let relative = (ball.velocity - p.velocity.extend(0.0)).length();
+        // GRF's keeper picks a ball up only through a pick-up animation that fits his run: coming
+        // out faster than a dribble for a ball that is no shot, he plays the kick he decided on with
+        // his feet (docs/grf-compatibility.md, "the keeper plays an uncontested loose ball with his
+        // feet").
+        let picks_up = keeper_hands && (ball.velocity.length() > SHOT_SPEED || p.velocity.length() <= DRIBBLE_SPEED);
         if keeper_hands && relative > SHOT_SPEED {
             // A shot. One that passes within hand reach of his body he stops, catching or parrying
             // it (below), when he has had time to get his hands there: GRF's keeper stops every
@@ -460,7 +466,7 @@ impl Match {
             return;
         }
         if let Some(kick) = self.inputs[g].first_time
-            && !keeper_hands
+            && !picks_up
             && !self.players[g].is_sliding()
         {
             // A first-time kick: the touch is the kick; he never has the ball at his feet.

@@ -273,18 +273,26 @@ fn a_keeper_waits_ten_metres_out_while_the_ball_is_in_the_other_half() {
     assert!(checked > 20, "the ball was deep in their half for {checked} steps only");
 }
 
+/// A built-in 11_vs_11_stochastic match (engine seed 1) with each team's ten outfield players in
+/// a line across the pitch, 6 m apart, theirs at x = `right_x` and ours at `left_x` (m).
+fn outfield_lines(right_x: f32, left_x: f32) -> touchline_engine::Env {
+    let mut env = common::builtin_env("11_vs_11_stochastic", 1);
+    let game = env.game_mut();
+    for i in 1..11 {
+        game.place_player(Side::Right, i, glam::Vec2::new(right_x, -30.0 + 6.0 * i as f32));
+        game.place_player(Side::Left, i, glam::Vec2::new(left_x, -30.0 + 6.0 * i as f32));
+    }
+    env
+}
+
 #[test]
 fn a_keeper_runs_for_a_loose_ball_he_is_clearly_first_to_outside_his_area() {
     // GRF's team AI sends the quickest of all 22 to a loose ball, keeper or not. A slow ball lies
     // 15 m in front of their keeper, outside his area; his team-mates are 25 m from it, ours 40 m:
     // he goes and gets it (before, he stayed on his line while a team-mate was quicker to the
     // ball than any of ours).
-    let mut env = common::builtin_env("11_vs_11_stochastic", 1);
+    let mut env = outfield_lines(0.0, -15.0);
     let game = env.game_mut();
-    for i in 1..11 {
-        game.place_player(Side::Right, i, glam::Vec2::new(0.0, -30.0 + 6.0 * i as f32));
-        game.place_player(Side::Left, i, glam::Vec2::new(-15.0, -30.0 + 6.0 * i as f32));
-    }
     game.place_player(Side::Right, 0, glam::Vec2::new(40.0, 0.0));
     game.place_ball(glam::Vec3::new(25.0, 0.0, 0.11), glam::Vec3::ZERO, None);
     let mut nearest = f32::INFINITY;
@@ -303,12 +311,8 @@ fn a_keeper_who_decides_to_clear_first_time_clears_though_he_has_time_by_the_tou
     // out. A pass runs at 6 m/s towards their keeper, who stands 6 m outside his area, with our
     // forward 5 m behind it: deciding again on the last tick, when he is on the ball and the
     // forward still about a second off, he stopped it instead.
-    let mut env = common::builtin_env("11_vs_11_stochastic", 1);
+    let mut env = outfield_lines(-10.0, -30.0);
     let game = env.game_mut();
-    for i in 1..11 {
-        game.place_player(Side::Right, i, glam::Vec2::new(-10.0, -30.0 + 6.0 * i as f32));
-        game.place_player(Side::Left, i, glam::Vec2::new(-30.0, -30.0 + 6.0 * i as f32));
-    }
     game.place_player(Side::Left, 10, glam::Vec2::new(17.0, 0.0));
     game.place_player(Side::Right, 0, glam::Vec2::new(30.0, 0.0));
     game.place_ball(glam::Vec3::new(22.0, 0.0, 0.11), glam::Vec3::new(6.0, 0.0, 0.0), Some((Side::Left, 10)));
@@ -332,12 +336,8 @@ fn a_keeper_coming_out_for_an_uncontested_ball_plays_it_first_time_upfield() {
     // 25-31 m/s, to a team-mate upfield, and never shows as its owner (40 episodes, none ended
     // with him holding the ball): with no opponent near as quick to it (a possession amount of
     // 3.4 or more) he does not ask for his hands.
-    let mut env = common::builtin_env("11_vs_11_stochastic", 1);
+    let mut env = outfield_lines(5.0, -20.0);
     let game = env.game_mut();
-    for i in 1..11 {
-        game.place_player(Side::Right, i, glam::Vec2::new(5.0, -30.0 + 6.0 * i as f32));
-        game.place_player(Side::Left, i, glam::Vec2::new(-20.0, -30.0 + 6.0 * i as f32));
-    }
     game.place_player(Side::Right, 0, glam::Vec2::new(50.0, 0.0));
     game.place_ball(glam::Vec3::new(28.0, 2.0, 0.11), glam::Vec3::new(9.0, 0.0, 0.0), Some((Side::Left, 10)));
     let mut struck = None;

@@ -285,6 +285,20 @@ fn outfield_lines(right_x: f32, left_x: f32) -> touchline_engine::Env {
     env
 }
 
+/// Ticks `game` until their keeper first touches the ball (at most 300 ticks) and returns the
+/// ball's velocity (m/s) as it leaves that touch; panics if he never touches it or if he ever
+/// has it at his feet or in his hands first.
+fn their_keepers_first_touch(game: &mut touchline_engine::Match) -> glam::Vec3 {
+    for tick in 0..300 {
+        game.tick();
+        assert_ne!(game.owner(), Some((Side::Right, 0)), "tick {tick}: their keeper had the ball");
+        if game.last_touch() == Some((Side::Right, 0)) {
+            return game.ball().velocity;
+        }
+    }
+    panic!("their keeper never touched the ball");
+}
+
 #[test]
 fn a_keeper_runs_for_a_loose_ball_he_is_clearly_first_to_outside_his_area() {
     // GRF's team AI sends the quickest of all 22 to a loose ball, keeper or not. A slow ball lies
@@ -316,16 +330,7 @@ fn a_keeper_who_decides_to_clear_first_time_clears_though_he_has_time_by_the_tou
     game.place_player(Side::Left, 10, glam::Vec2::new(17.0, 0.0));
     game.place_player(Side::Right, 0, glam::Vec2::new(30.0, 0.0));
     game.place_ball(glam::Vec3::new(22.0, 0.0, 0.11), glam::Vec3::new(6.0, 0.0, 0.0), Some((Side::Left, 10)));
-    let mut struck = None;
-    for tick in 0..300 {
-        game.tick();
-        assert_ne!(game.owner(), Some((Side::Right, 0)), "tick {tick}: their keeper stopped the ball");
-        if game.last_touch() == Some((Side::Right, 0)) {
-            struck = Some(game.ball().velocity.length());
-            break;
-        }
-    }
-    let speed = struck.expect("their keeper never touched the ball");
+    let speed = their_keepers_first_touch(game).length();
     assert!(speed > 15.0, "the clearance left at {speed:.1} m/s");
 }
 
@@ -340,16 +345,7 @@ fn a_keeper_coming_out_for_an_uncontested_ball_plays_it_first_time_upfield() {
     let game = env.game_mut();
     game.place_player(Side::Right, 0, glam::Vec2::new(50.0, 0.0));
     game.place_ball(glam::Vec3::new(28.0, 2.0, 0.11), glam::Vec3::new(9.0, 0.0, 0.0), Some((Side::Left, 10)));
-    let mut struck = None;
-    for tick in 0..300 {
-        game.tick();
-        assert_ne!(game.owner(), Some((Side::Right, 0)), "tick {tick}: their keeper took the ball");
-        if game.last_touch() == Some((Side::Right, 0)) {
-            struck = Some(game.ball().velocity);
-            break;
-        }
-    }
-    let v = struck.expect("their keeper never touched the ball");
+    let v = their_keepers_first_touch(game);
     assert!(v.truncate().length() > 15.0 && v.x < 0.0, "played upfield first time: {v}");
 }
 

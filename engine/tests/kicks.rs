@@ -2,7 +2,8 @@
 //! without the ball is lost; a pass always finds a team-mate, even straight behind; the ball leaves
 //! the foot after the button's release and the kick's wind-up; sliding is not a way to push one's
 //! own ball on; a stochastic shot can end differently from the same spot, a deterministic one not;
-//! a player whose stick is idle chases his own shot when it stops short.
+//! a carrier holding shot runs on with the ball; a player whose stick is idle chases his own shot
+//! when it stops short.
 
 mod common;
 
@@ -182,6 +183,29 @@ fn holding_the_shot_button_shoots_once_the_gauge_passes_half_a_second() {
     let (ball, _) = play(&mut env, &[Action::Shot; 20], 20);
     let left = ball.iter().position(|b| b[0] > start + 0.01).expect("the shot is struck");
     assert!((6..=9).contains(&left), "struck {left} steps into the hold");
+}
+
+#[test]
+fn a_carrier_holding_shot_runs_on_with_the_ball_while_the_gauge_fills() {
+    // GRF 2.10.2 (academy_empty_goal, shot held from the first step, engine seeds 100-101): our
+    // centre back reaches the ball at about 3 m/s and runs on with it at 3.8-5.3 m/s until the shot
+    // leaves at step 8-10; with no button pressed he stops on the ball. touchline's keeps the pace he
+    // reaches the ball at, about 2.3 m/s (he gets there slower than GRF's).
+    let pace = |env: &Env| {
+        let o = &env.observations()[0];
+        env.game().players()[o.active as usize].velocity.length()
+    };
+    for seed in 0..3 {
+        let mut held = common::env("academy_empty_goal", seed);
+        let mut idle = common::env("academy_empty_goal", seed);
+        for _ in 0..7 {
+            held.step(&[Action::Shot]).unwrap();
+            idle.step(&[Action::Idle]).unwrap();
+        }
+        assert!(owned_by_agent(&held) && owned_by_agent(&idle), "seed {seed}: the shot has not left yet");
+        assert!(pace(&held) > 2.0, "seed {seed}: holding shot, he runs at {} m/s", pace(&held));
+        assert!(pace(&idle) < 1.0, "seed {seed}: idle, he runs at {} m/s", pace(&idle));
+    }
 }
 
 #[test]

@@ -124,8 +124,9 @@ pub struct Env {
 }
 
 /// The input a gamepad in state `sticky` gives `player` in a step where `press` was pressed
-/// (agents' and scripted players' actions alike).
-fn sticky_input(sticky: &StickyState, press: Press, player: &crate::player::Player) -> PlayerInput {
+/// (agents' and scripted players' actions alike); `on_ball`: he may play the ball
+/// (`Match::may_play_ball`).
+fn sticky_input(sticky: &StickyState, press: Press, player: &crate::player::Player, on_ball: bool) -> PlayerInput {
     let dir = sticky.direction_action().and_then(Action::direction_vector).unwrap_or(Vec2::ZERO);
     let speed = if sticky.dribble {
         DRIBBLE_SPEED
@@ -136,7 +137,8 @@ fn sticky_input(sticky: &StickyState, press: Press, player: &crate::player::Play
     };
     let aim = if dir == Vec2::ZERO { player.facing } else { dir };
     // A pass or shot button held down, its kick not yet asked for: the man on the ball runs on.
-    let velocity = if sticky.held.is_some_and(|held| !held.fired) { buffered_run(player) } else { dir * speed };
+    let buffered = on_ball && sticky.held.is_some_and(|held| !held.fired);
+    let velocity = if buffered { buffered_run(player) } else { dir * speed };
     PlayerInput {
         velocity,
         look: player.facing,

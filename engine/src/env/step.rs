@@ -158,8 +158,9 @@ impl Env {
             };
             let global = if side == Side::Right { action.rotated() } else { action };
             let mut sticky = self.state.game.script_sticky(g);
-            let press = sticky.apply(global, self.state.game.may_play_ball(side, index));
-            let input = sticky_input(&sticky, press, &self.state.game.players()[g]);
+            let on_ball = self.state.game.may_play_ball(side, index);
+            let press = sticky.apply(global, on_ball);
+            let input = sticky_input(&sticky, press, &self.state.game.players()[g], on_ball);
             self.state.game.set_script_input(g, input, sticky);
         }
         Ok(())
@@ -259,7 +260,7 @@ impl Env {
             self.state.game.set_agent_input(side, index, None);
             return;
         }
-        let input = sticky_input(&sticky, press, &self.state.game.team(side)[index]);
+        let input = sticky_input(&sticky, press, &self.state.game.team(side)[index], on_ball);
         self.state.game.set_agent_input(side, index, Some(input));
     }
 }

@@ -165,10 +165,8 @@ fn sticky_input(sticky: &StickyState, press: Press, player: &crate::player::Play
 /// stood still and struck it at about 31 m/s before this, 33.6 after (the fidelity harness's
 /// probe shot_every_step; docs/grf-compatibility.md, "a carrier holding pass or shot runs on").
 fn buffered_run(player: &crate::player::Player) -> Vec2 {
-    // Below GRF's idle-to-dribble switch (m/s) a player counts as standing.
-    const STANDING: f32 = 1.8;
     let pace = player.velocity.length();
-    if pace < STANDING { Vec2::ZERO } else { player.facing * pace }
+    if pace < crate::game::kick::STANDING_RUN { Vec2::ZERO } else { player.facing * pace }
 }
 
 impl Env {

@@ -301,6 +301,46 @@ fn an_agent_that_stalls_at_a_set_piece_is_made_to_play_it() {
     assert!((22..=24).contains(&waited), "the throw-in is taken {waited} steps in, not just after the forced pass");
 }
 
+#[test]
+fn the_taker_of_a_placed_ball_is_not_made_to_run_and_keeps_no_held_direction() {
+    // GRF's anti-stalling rule makes the agent's ball owner run, reading the owner off the
+    // observation; a ball placed for a free kick is nobody's there (docs/grf-compatibility.md#raw-observation).
+    // So an idle agent's taker plays the forced short pass and the controller holds no direction
+    // afterwards: were he made to run, the held "right" would drive every later carrier at goal.
+    use touchline_engine::scenario::StartRestart;
+    let s = touchline_engine::Scenario {
+        name: "free_kick_drill".into(),
+        game_duration: 200,
+        left_team: vec![
+            touchline_engine::PlayerEntry::new(touchline_engine::Role::GK, -1.0, 0.0),
+            touchline_engine::PlayerEntry::new(touchline_engine::Role::CB, -0.5, 0.0),
+            touchline_engine::PlayerEntry::new(touchline_engine::Role::CM, -0.2, 0.1),
+        ],
+        right_team: vec![
+            touchline_engine::PlayerEntry::new(touchline_engine::Role::GK, -1.0, 0.0),
+            touchline_engine::PlayerEntry::new(touchline_engine::Role::CF, 0.3, 0.0),
+        ],
+        start_with: Some(StartRestart { mode: GameMode::FreeKick, team: Side::Left, at: Some([-0.5, 0.0]) }),
+        ..touchline_engine::Scenario::default()
+    };
+    for seed in 0..3 {
+        let mut env = Env::new(s.clone(), seed).unwrap();
+        let mut steps = 0;
+        while env.info().game_mode == GameMode::FreeKick {
+            env.step(&[Action::Idle]).unwrap();
+            steps += 1;
+            let o = &env.observations()[0];
+            assert_eq!(o.sticky_actions, [0; 10], "seed {seed}: a direction held at step {steps}");
+            assert!(steps <= 30, "seed {seed}: the free kick is still not taken");
+        }
+        assert!(steps > 20, "seed {seed}: taken at step {steps}, before the forced pass");
+        for _ in 0..20 {
+            env.step(&[Action::Idle]).unwrap();
+            assert_eq!(env.observations()[0].sticky_actions, [0; 10], "seed {seed}: a direction held after the restart");
+        }
+    }
+}
+
 /// How far (m) our CB, an agent's player with his stick idle, moves towards a ball lying between
 /// him and an opponent's CB `opponent_x` m from it, in half a second.
 fn idle_run_towards_a_loose_ball(opponent_x: f32) -> f32 {

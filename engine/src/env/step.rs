@@ -225,7 +225,8 @@ impl Env {
 
     /// GRF's anti-stalling rule (docs/grf-compatibility.md#action-effects): after 20 steps waiting at a set
     /// piece every agent action becomes `short_pass`; after that, `idle`, except that the agent-controlled ball owner
-    /// is made to run towards the opponents' goal (and after 30 steps back). `builtin_ai` is left
+    /// (as the observation shows him, [`crate::game::Match::observed_owner`]) is made to run towards the opponents' goal (and after
+    /// 30 steps back). `builtin_ai` is left
     /// alone: the built-in AI takes set pieces itself.
     fn anti_stalling(&self, i: usize, action: Action) -> Action {
         use std::cmp::Ordering;
@@ -239,7 +240,11 @@ impl Env {
             Ordering::Equal => Action::ShortPass,
             Ordering::Greater => {
                 let c = &self.state.controllers[i];
-                if self.state.game.owner() == Some((c.side, self.state.controlled[i])) {
+                // GRF's rule reads the observation's owner: a ball placed for a goal kick,
+                // corner kick, free kick or penalty kick is nobody's, so its taker is not made to
+                // run (else the held direction outlives the restart: an idle agent's later
+                // carriers would all run at goal).
+                if self.state.game.observed_owner() == Some((c.side, self.state.controlled[i])) {
                     // In the controller's own frame "right" runs at the opponents' goal.
                     if self.state.waiting_for_game < 30 { Action::Right } else { Action::Left }
                 } else {

@@ -95,8 +95,11 @@ fn the_penalty_drill_starts_on_the_spot_and_ends_on_a_goal_a_save_or_a_miss() {
 }
 
 /// An idle taker: GRF's anti-stalling counter makes him play the ball after 20 steps of waiting
-/// (GRF 2.10, tests/penalty with an idle right agent: the forced kick 28 steps after the award),
-/// then play goes on until an end condition holds.
+/// (GRF 2.10, tests/penalty with an idle right agent: the forced kick 28 steps after the award).
+/// The forced button is short_pass, and a pass goes to a team-mate whatever the direction: here
+/// the only one is our keeper, so the ball goes back upfield and nothing ends the drill. The
+/// taker is not made to run meanwhile: a ball on the mark is nobody's in the observation, which
+/// GRF's rule reads (docs/grf-compatibility.md#action-effects).
 #[test]
 fn an_idle_taker_is_made_to_play_the_ball() {
     let mut env = example("penalty_kick.tl", 0);
@@ -104,7 +107,11 @@ fn an_idle_taker_is_made_to_play_the_ball() {
     assert!(modes[..20].iter().all(|&m| m == GameMode::Penalty), "{modes:?}");
     let taken = modes.iter().position(|&m| m == GameMode::Normal).expect("the kick was never taken") + 1;
     assert!((21..=30).contains(&taken), "taken at step {taken}");
-    assert!(terminated && steps < 401, "{steps} steps, terminated {terminated}");
+    assert!(!terminated && steps == 401, "{steps} steps, terminated {terminated}");
+    assert_eq!(env.game().score(), [0, 0]);
+    assert_eq!(env.observations()[0].sticky_actions, [0; 10], "no direction held");
+    let ball = env.game().ball().position;
+    assert!(ball.x < 44.0 - 20.0, "the pass went back towards our keeper: ball at {ball}");
 }
 
 /// academy_corner from a real corner kick: game mode 4 at the start (GRF's academy_corner starts
@@ -234,3 +241,4 @@ fn a_save_is_an_event_rewards_can_pay() {
     }
     assert!(saves > 0, "no penalty was saved in 30");
 }
+

@@ -241,4 +241,3 @@ fn a_save_is_an_event_rewards_can_pay() {
     }
     assert!(saves > 0, "no penalty was saved in 30");
 }
-

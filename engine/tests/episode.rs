@@ -336,7 +336,11 @@ fn the_taker_of_a_placed_ball_is_not_made_to_run_and_keeps_no_held_direction() {
         assert!(steps > 20, "seed {seed}: taken at step {steps}, before the forced pass");
         for _ in 0..20 {
             env.step(&[Action::Idle]).unwrap();
-            assert_eq!(env.observations()[0].sticky_actions, [0; 10], "seed {seed}: a direction held after the restart");
+            assert_eq!(
+                env.observations()[0].sticky_actions,
+                [0; 10],
+                "seed {seed}: a direction held after the restart"
+            );
         }
     }
 }

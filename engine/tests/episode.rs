@@ -308,20 +308,18 @@ fn the_taker_of_a_placed_ball_is_not_made_to_run_and_keeps_no_held_direction() {
     // So an idle agent's taker plays the forced short pass and the controller holds no direction
     // afterwards: were he made to run, the held "right" would drive every later carrier at goal.
     use touchline_engine::scenario::StartRestart;
-    let s = touchline_engine::Scenario {
+    use touchline_engine::{PlayerEntry, Role, Scenario};
+    let s = Scenario {
         name: "free_kick_drill".into(),
         game_duration: 200,
         left_team: vec![
-            touchline_engine::PlayerEntry::new(touchline_engine::Role::GK, -1.0, 0.0),
-            touchline_engine::PlayerEntry::new(touchline_engine::Role::CB, -0.5, 0.0),
-            touchline_engine::PlayerEntry::new(touchline_engine::Role::CM, -0.2, 0.1),
+            PlayerEntry::new(Role::GK, -1.0, 0.0),
+            PlayerEntry::new(Role::CB, -0.5, 0.0),
+            PlayerEntry::new(Role::CM, -0.2, 0.1),
         ],
-        right_team: vec![
-            touchline_engine::PlayerEntry::new(touchline_engine::Role::GK, -1.0, 0.0),
-            touchline_engine::PlayerEntry::new(touchline_engine::Role::CF, 0.3, 0.0),
-        ],
+        right_team: vec![PlayerEntry::new(Role::GK, -1.0, 0.0), PlayerEntry::new(Role::CF, 0.3, 0.0)],
         start_with: Some(StartRestart { mode: GameMode::FreeKick, team: Side::Left, at: Some([-0.5, 0.0]) }),
-        ..touchline_engine::Scenario::default()
+        ..Scenario::default()
     };
     for seed in 0..3 {
         let mut env = Env::new(s.clone(), seed).unwrap();

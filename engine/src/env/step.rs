@@ -224,10 +224,9 @@ impl Env {
     }
 
     /// GRF's anti-stalling rule (docs/grf-compatibility.md#action-effects): after 20 steps waiting at a set
-    /// piece every agent action becomes `short_pass`; after that, `idle`, except that the agent-controlled ball owner
-    /// (as the observation shows him, [`crate::game::Match::observed_owner`]) is made to run towards the opponents' goal (and after
-    /// 30 steps back). `builtin_ai` is left
-    /// alone: the built-in AI takes set pieces itself.
+    /// piece every agent action becomes `short_pass`; after that, `idle`, except that the agent-controlled ball owner,
+    /// as the observation shows him ([`crate::game::Match::observed_owner`]), is made to run towards the opponents'
+    /// goal (and after 30 steps back). `builtin_ai` is left alone: the built-in AI takes set pieces itself.
     fn anti_stalling(&self, i: usize, action: Action) -> Action {
         use std::cmp::Ordering;
         // A player handed to the built-in AI takes the set piece itself; overriding it with `idle`

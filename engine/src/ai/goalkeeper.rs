@@ -9,8 +9,9 @@ use glam::Vec2;
 use super::prediction::SAMPLE_DT;
 use super::{Analysis, Difficulty, MatchView, Plan};
 use crate::game::{Kick, KickKind, KickTarget};
+use crate::geometry::TeamFrame;
 use crate::geometry::pitch::{GOAL_HALF_WIDTH, HALF_LENGTH, in_penalty_area};
-use crate::player::nearest_distance;
+use crate::player::{Player, nearest_distance};
 
 /// Ticks a keeper holds the ball before distributing it.
 const HOLD_TICKS: u64 = 60;
@@ -22,14 +23,17 @@ const FREE_OF: f32 = 10.0;
 const KEEPER_LINE: f32 = 0.7;
 /// With his team on the ball, the share of the way out to it the keeper stands (GRF: 0.3).
 const OUT_IN_POSSESSION: f32 = 0.3;
-/// A carrier's shooting point lies this far from goal on his line to it (m), GRF's 20 m.
+/// The shooting threshold of the rush rule (m): the threat's shooting point lies on his line to
+/// goal, this far from goal when he is twice as far out or more, and halfway when nearer (GRF
+/// 2.10's keeper, docs/grf-compatibility.md#team-ai, "the keeper's rush rule").
 const SHOOTING_DISTANCE: f32 = 20.0;
-/// A team-mate this near the carrier (m) is on him: the keeper leaves the carrier to him. GRF's
-/// keepers do not come out for a carrier with defenders at his back (measured: an idle carrier at
-/// the centre spot with five defenders round him keeps the ball from the keeper for 400 steps in
-/// 94 % of academy_run_to_score_with_keeper episodes).
-const ENGAGED: f32 = 10.0;
-/// A rushing keeper goes for the spot this far short of the ball (m), on its goal side.
+/// The same for the second opponent, the one nearest the goal (GRF 2.10's 24 m).
+const HELPER_SHOOTING_DISTANCE: f32 = 24.0;
+/// How far ahead (s) the keeper reckons an opponent's and a team-mate's places in the rush rule:
+/// GRF 2.10's 0.32 s for opponents, 0.24 s for his team-mates.
+const OPPONENT_AHEAD: f32 = 0.32;
+const MATE_AHEAD: f32 = 0.24;
+/// A rushing keeper goes for the spot this far short (m) of the point he rushes at.
 const RUSH_SHORT_OF_BALL: f32 = 0.5;
 /// How far in front of his goal line (m) the keeper waits while the ball is in the other half
 /// (GRF 2.10's keeper line distance).
@@ -107,10 +111,11 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
     }
 
     // GRF's rush rule: against a carrier (or the opponent nearest a loose ball) whose shooting
-    // point no team-mate covers, come out all the way to the ball.
+    // point no team-mate covers, come out towards the ball, less far when a second opponent
+    // near goal is uncovered too.
     // With the ball loose, the threat is the opponent nearest to it.
     let threat = match view.owner {
-        Some(o) if view.players[o].side != me.side => Some(view.players[o].position),
+        Some(o) if view.players[o].side != me.side => Some(&view.players[o]),
         Some(_) => None,
         // Loose: the opponent nearest to it, when they get there first.
         None if analysis.chaser.is_some_and(|(_, ours, _)| ours <= analysis.opponent_time) => None,
@@ -118,14 +123,20 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
             .team(me.side.opponent())
             .iter()
             .filter(|p| p.active)
-            .min_by(|a, b| a.position.distance_squared(ball).total_cmp(&b.position.distance_squared(ball)))
-            .map(|p| p.position),
+            .min_by(|a, b| a.position.distance_squared(ball).total_cmp(&b.position.distance_squared(ball))),
     };
-    if let Some(threat) = threat
-        && !covered(view, g, frame, frame.vec2(threat))
-    {
-        let at_t = ball_t + (goal_t - ball_t).normalize_or(Vec2::NEG_X) * RUSH_SHORT_OF_BALL;
-        return Plan::go(frame.vec2(at_t), me.max_speed, ball - me.position);
+    if let Some(threat) = threat {
+        let bias = rush_bias(view, g, frame, threat);
+        if bias > 0.0 {
+            // Along the line from his goal line to the ball, out to `bias` of the way to 0.5 m
+            // short of it. GRF aims at a point between the ball 0.6 s ahead and the threat 0.32 s
+            // ahead; touchline's keeper, who challenges only from a stand, would run alongside
+            // the carrier there, so he goes for the ball as it is.
+            let line_t = line_point(ball_t);
+            let out = ((ball_t.distance(line_t) - RUSH_SHORT_OF_BALL).max(0.0) * bias).max(KEEPER_LINE);
+            let at_t = line_t + (ball_t - line_t).normalize_or(Vec2::X) * out;
+            return Plan::go(frame.vec2(at_t), me.max_speed, ball - me.position);
+        }
     }
 
     // Positioning on the ball–goal line, a little in front of the goal line; with his team on the
@@ -176,24 +187,63 @@ fn ball_in_own_half(t_keeper: f32, analysis: &Analysis) -> bool {
     analysis.frame.vec2(samples[k].truncate()).x < 0.0
 }
 
-/// Whether a team-mate of keeper `g` covers the shooting point of a carrier at `carrier_t` (team
-/// frame): the point 20 m out on the carrier's line to goal (the carrier himself when nearer).
-/// Covered when some outfield team-mate is at least 1 m nearer to it than the carrier (GRF's rush
-/// rule compares times at equal pace).
-fn covered(view: &MatchView, g: usize, frame: crate::geometry::TeamFrame, carrier_t: Vec2) -> bool {
+/// Where the line from `from_t` (team frame) towards the centre of the goal meets the line
+/// [`KEEPER_LINE`] in front of the goal line, kept between the posts (GRF's keeper stands on the
+/// line between the ball and his goal).
+fn line_point(from_t: Vec2) -> Vec2 {
+    let x = -HALF_LENGTH + KEEPER_LINE;
+    let depth = from_t.x + HALF_LENGTH;
+    let y = if depth > KEEPER_LINE { from_t.y * KEEPER_LINE / depth } else { from_t.y };
+    Vec2::new(x, y.clamp(-GOAL_HALF_WIDTH, GOAL_HALF_WIDTH))
+}
+
+/// An opponent's shooting point (team frame) for a threshold of `threshold` m, with his distance
+/// to it: on his line to goal, `threshold` from goal when he is `2 × threshold` out or further, and
+/// halfway to goal when nearer.
+fn shooting_point(at_t: Vec2, threshold: f32) -> (f32, Vec2) {
     let goal_t = Vec2::new(-HALF_LENGTH, 0.0);
-    let to_carrier = carrier_t - goal_t;
-    let point = if to_carrier.length() > SHOOTING_DISTANCE {
-        goal_t + to_carrier.normalize() * SHOOTING_DISTANCE
-    } else {
-        carrier_t
-    };
-    let carrier_distance = carrier_t.distance(point);
+    let d = at_t.distance(goal_t);
+    let to_point = (d - threshold * (d / (2.0 * threshold)).min(1.0)).clamp(0.0, HALF_LENGTH);
+    (to_point, at_t + (goal_t - at_t).normalize_or_zero() * to_point)
+}
+
+/// How far keeper `g`'s team-mate nearest to `point` (team frame) will be from it shortly (m);
+/// infinite with no outfield team-mate.
+fn nearest_mate_to(view: &MatchView, g: usize, frame: TeamFrame, point: Vec2) -> f32 {
     let me = &view.players[g];
-    view.team(me.side).iter().filter(|p| p.active && !p.is_keeper()).any(|p| {
-        let at = frame.vec2(p.position);
-        at.distance(point) + 1.0 < carrier_distance || at.distance(carrier_t) < ENGAGED
-    })
+    view.team(me.side)
+        .iter()
+        .filter(|p| p.active && p.index != me.index)
+        .min_by(|a, b| {
+            frame.vec2(a.position).distance_squared(point).total_cmp(&frame.vec2(b.position).distance_squared(point))
+        })
+        .map_or(f32::INFINITY, |p| frame.vec2(p.position + p.velocity * MATE_AHEAD).distance(point))
+}
+
+/// GRF 2.10's rush rule for keeper `g` against `threat`: how far out towards him the keeper
+/// comes, from 0 (he keeps his line) to 1 (all the way). 0 when a team-mate will be no more than
+/// a metre further than the threat from the threat's shooting point; else 1, less when a second
+/// opponent (the one nearest the goal) has an uncovered shooting point not much further out
+/// (`1 − secondary × helper`, `secondary` growing over 2 m of his lead there and `helper` 0.7
+/// for a second opponent as near his point as the threat is to his, down to 0 at 1.5 times).
+fn rush_bias(view: &MatchView, g: usize, frame: TeamFrame, threat: &Player) -> f32 {
+    let threat_t = frame.vec2(threat.position + threat.velocity * OPPONENT_AHEAD);
+    let (threat_to_point, point) = shooting_point(threat_t, SHOOTING_DISTANCE);
+    if nearest_mate_to(view, g, frame, point) <= threat_to_point + 1.0 {
+        return 0.0;
+    }
+    let goal_t = Vec2::new(-HALF_LENGTH, 0.0);
+    let helper = view.team(threat.side).iter().filter(|p| p.active && p.index != threat.index).min_by(|a, b| {
+        frame.vec2(a.position).distance_squared(goal_t).total_cmp(&frame.vec2(b.position).distance_squared(goal_t))
+    });
+    let Some(helper) = helper else { return 1.0 };
+    let helper_t = frame.vec2(helper.position + helper.velocity * OPPONENT_AHEAD);
+    let (helper_to_point, helper_point) = shooting_point(helper_t, HELPER_SHOOTING_DISTANCE);
+    let mate_to_helper_point = nearest_mate_to(view, g, frame, helper_point);
+    let secondary = ((mate_to_helper_point - helper_to_point) / 2.0).clamp(0.0, 1.0);
+    let ratio = helper_to_point / (threat_to_point + 1e-4);
+    let helper_weight = (1.0 - ((ratio - 1.0) / 0.5).clamp(0.0, 1.0)) * 0.7;
+    (1.0 - secondary * helper_weight).clamp(0.0, 1.0)
 }
 
 /// The keeper holds the ball: wait a moment, then play it to the most open team-mate (short if
@@ -250,4 +300,62 @@ pub fn distribute(view: &MatchView, g: usize, held_for: u64, analysis: &Analysis
 
 fn frame_forward(analysis: &Analysis) -> Vec2 {
     analysis.frame.vec2(Vec2::X)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::game::Match;
+    use crate::geometry::Side;
+    use crate::player::Role;
+    use crate::scenario::{PlayerEntry, Scenario};
+
+    /// Our keeper, one outfield team-mate and two opponents, at rest where the test puts them.
+    fn keeper_and_three(mate: Vec2, threat: Vec2, helper: Vec2) -> Match {
+        let s = Scenario {
+            left_team: vec![PlayerEntry::new(Role::GK, -1.0, 0.0), PlayerEntry::new(Role::CB, -0.5, 0.0)],
+            right_team: vec![
+                PlayerEntry::new(Role::GK, -1.0, 0.0),
+                PlayerEntry::new(Role::CF, 0.0, 0.0),
+                PlayerEntry::new(Role::AM, 0.0, 0.1),
+            ],
+            ..Scenario::default()
+        };
+        let mut m = Match::new(&s, 0, 0);
+        m.place_player(Side::Left, 1, mate);
+        m.place_player(Side::Right, 1, threat);
+        m.place_player(Side::Right, 2, helper);
+        m
+    }
+
+    #[test]
+    fn the_shooting_point_is_twenty_metres_out_or_halfway_for_a_nearer_threat() {
+        let (to_point, point) = shooting_point(Vec2::new(-HALF_LENGTH + 50.0, 0.0), SHOOTING_DISTANCE);
+        assert!((to_point - 30.0).abs() < 1e-4 && (point.x - (-HALF_LENGTH + 20.0)).abs() < 1e-4);
+        let (to_point, point) = shooting_point(Vec2::new(-HALF_LENGTH + 30.0, 0.0), SHOOTING_DISTANCE);
+        assert!((to_point - 15.0).abs() < 1e-4 && (point.x - (-HALF_LENGTH + 15.0)).abs() < 1e-4);
+    }
+
+    #[test]
+    fn the_keeper_comes_out_only_for_an_uncovered_threat_and_less_with_a_second_one_near_goal() {
+        let frame = TeamFrame::of(Side::Left);
+        let goal = -HALF_LENGTH;
+        let threat_at = Vec2::new(goal + 30.0, 0.0);
+        let far_helper = Vec2::new(0.0, 30.0);
+        let bias = |m: &Match| rush_bias(&crate::ai::test_view(m), 0, frame, &m.team(Side::Right)[1]);
+        // The threat's shooting point is 15 m out. A team-mate 1 m further from it than the
+        // threat covers it (GRF compares with a metre's grace the threat's way).
+        let m = keeper_and_three(Vec2::new(goal + 15.0, 15.9), threat_at, far_helper);
+        assert_eq!(bias(&m), 0.0);
+        // 2 m further: uncovered, and with the other opponent far off the keeper goes all the way.
+        let m = keeper_and_three(Vec2::new(goal + 15.0, 17.0), threat_at, far_helper);
+        assert_eq!(bias(&m), 1.0);
+        // A second opponent about as near goal (31.2 m out, 15.6 m from his shooting point, 1.04
+        // times the threat's 15), unmarked: the keeper comes 1 - 0.7 × (1 - 0.08) = 0.36 of the way.
+        let m = keeper_and_three(Vec2::new(goal + 15.0, 17.0), threat_at, Vec2::new(goal + 24.0, -20.0));
+        assert!((bias(&m) - 0.358).abs() < 0.005, "{}", bias(&m));
+        // The same with our team-mate marking him: all the way again.
+        let m = keeper_and_three(Vec2::new(goal + 12.0, -20.0), threat_at, Vec2::new(goal + 24.0, -20.0));
+        assert_eq!(bias(&m), 1.0);
+    }
 }

@@ -50,7 +50,7 @@ impl ForceField {
         } else if exp == 0.5 {
             near.sqrt()
         } else {
-            libm::powf(near, exp)
+            super::power::pow_unit(near, exp)
         };
         let force = power * near;
         self.sum -= to * (force / d);

@@ -135,7 +135,7 @@ fn marking_weight(role: Role, fading: f32) -> f32 {
         Role::CF => 1.3,
         Role::DM | Role::CM | Role::LM | Role::RM | Role::AM => 1.5,
     };
-    libm::powf((k - role.mind_set() - fading).clamp(0.0, 1.0), 0.7)
+    super::power::pow_unit((k - role.mind_set() - fading).clamp(0.0, 1.0), 0.7)
 }
 
 /// Where marker `p` stands (m, global) to mark `man` (of the opponents; `on_ball`: he has the

@@ -13,6 +13,7 @@ mod force_field;
 pub mod goalkeeper;
 pub mod marking;
 mod pass_choice;
+mod power;
 pub mod prediction;
 pub mod pressing;
 pub mod set_piece;

@@ -229,8 +229,8 @@ pub(crate) fn possession_bias(view: &MatchView, side: crate::geometry::Side) -> 
 /// decision.
 pub(crate) fn micro_focus_strength(ball_x: f32, p: f32) -> f32 {
     let side = ((ball_x / HALF_LENGTH + 0.7) / 1.4).clamp(0.0, 1.0) * 0.7 + 0.3;
-    let attacking = if p > 0.0 { libm::powf(side, 0.8) * p } else { 0.0 };
-    let defending = if p < 1.0 { libm::powf(1.0 - side, 0.6) * (1.0 - p) } else { 0.0 };
+    let attacking = if p > 0.0 { super::power::pow_unit(side, 0.8) * p } else { 0.0 };
+    let defending = if p < 1.0 { super::power::pow_unit(1.0 - side, 0.6) * (1.0 - p) } else { 0.0 };
     let auto = attacking + defending;
     (0.938 + (0.826 - 0.938) * p) * (0.2 + 0.8 * auto)
 }

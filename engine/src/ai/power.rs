@@ -18,7 +18,6 @@ const SQRT_2: f64 = std::f64::consts::SQRT_2;
 /// `x^e` for `x` in [0, 1] (clamped into it; NaN counts as 0) and `e` > 0. Within 2e-7 of the
 /// exact value relative to it (`pow_matches_libm_closely` below).
 pub(crate) fn pow_unit(x: f32, e: f32) -> f32 {
-    // NaN fails this test too.
     if x.is_nan() || x <= 0.0 {
         return 0.0;
     }

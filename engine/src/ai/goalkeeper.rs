@@ -33,6 +33,8 @@ const HELPER_SHOOTING_DISTANCE: f32 = 24.0;
 /// GRF 2.10's 0.32 s for opponents, 0.24 s for his team-mates.
 const OPPONENT_AHEAD: f32 = 0.32;
 const MATE_AHEAD: f32 = 0.24;
+/// The centre of the keeper's own goal, in his team's frame (m).
+const OWN_GOAL: Vec2 = Vec2::new(-HALF_LENGTH, 0.0);
 /// A rushing keeper goes for the spot this far short (m) of the point he rushes at.
 const RUSH_SHORT_OF_BALL: f32 = 0.5;
 /// How far in front of his goal line (m) the keeper waits while the ball is in the other half
@@ -62,7 +64,7 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
     let ball = view.ball.xy();
     let ball_t = frame.vec2(ball);
     let me_t = frame.vec2(me.position);
-    let goal_t = Vec2::new(-HALF_LENGTH, 0.0);
+    let goal_t = OWN_GOAL;
     // When and where he can meet the ball, as the team AI reckons its outfield players' times.
     let (t_keeper, meet) = analysis.path.intercept(me.position, me.max_speed * 0.9, 1.0);
 
@@ -201,7 +203,7 @@ fn line_point(from_t: Vec2) -> Vec2 {
 /// to it: on his line to goal, `threshold` from goal when he is `2 × threshold` out or further, and
 /// halfway to goal when nearer.
 fn shooting_point(at_t: Vec2, threshold: f32) -> (f32, Vec2) {
-    let goal_t = Vec2::new(-HALF_LENGTH, 0.0);
+    let goal_t = OWN_GOAL;
     let d = at_t.distance(goal_t);
     let to_point = (d - threshold * (d / (2.0 * threshold)).min(1.0)).clamp(0.0, HALF_LENGTH);
     (to_point, at_t + (goal_t - at_t).normalize_or_zero() * to_point)
@@ -232,7 +234,7 @@ fn rush_bias(view: &MatchView, g: usize, frame: TeamFrame, threat: &Player) -> f
     if nearest_mate_to(view, g, frame, point) <= threat_to_point + 1.0 {
         return 0.0;
     }
-    let goal_t = Vec2::new(-HALF_LENGTH, 0.0);
+    let goal_t = OWN_GOAL;
     let helper = view.team(threat.side).iter().filter(|p| p.active && p.index != threat.index).min_by(|a, b| {
         frame.vec2(a.position).distance_squared(goal_t).total_cmp(&frame.vec2(b.position).distance_squared(goal_t))
     });

@@ -130,10 +130,12 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, difficulty: &Diffic
     }
 }
 
-/// GRF's hunting of a carrier (docs/grf-compatibility.md#team-ai): of the team's two outfield players
-/// nearest him, one within his hunting distance (markers are left out by [`plan`]) goes for the ball, while
+/// GRF's hunting of a carrier (docs/grf-compatibility.md#team-ai): of the team's two players nearest
+/// him, one within his hunting distance (markers are left out by [`plan`]) goes for the ball, while
 /// he is not yet goal-side of the carrier ([`needs_defending_movement`]). Everyone else holds the
 /// shape or his man, so a carrier is met by the defender in front of him only when he comes on.
+/// The keeper counts among the two nearest, as in GRF 2.10.2's hunt (its closest-players search
+/// leaves no role out): by his own box only one outfield player hunts with him.
 fn hunts(view: &MatchView, g: usize, carrier: usize, difficulty: &Difficulty) -> bool {
     let p = &view.players[g];
     let c = &view.players[carrier];
@@ -143,7 +145,7 @@ fn hunts(view: &MatchView, g: usize, carrier: usize, difficulty: &Difficulty) ->
         .clone()
         .filter(|&h| h != g)
         .map(|h| &view.players[h])
-        .filter(|q| q.active && !q.is_keeper() && q.position.distance_squared(aim) < d2)
+        .filter(|q| q.active && q.position.distance_squared(aim) < d2)
         .count();
     if nearer >= 2 {
         return false;
@@ -200,6 +202,37 @@ mod tests {
         // A ball as quick as he is: chased to the 2 s horizon.
         let quick = meeting_point(Vec2::new(-6.0, 0.0), 7.0, Vec2::ZERO, Vec2::new(7.0, 0.0));
         assert_eq!(quick, Vec2::new(14.0, 0.0));
+    }
+
+    #[test]
+    fn the_keeper_counts_among_the_two_players_nearest_the_carrier() {
+        use crate::game::Match;
+        use crate::scenario::{PlayerEntry, Scenario};
+        // Their carrier 12 m from our goal (we defend -x); our keeper 6 m from him, a centre
+        // back 8 m and a right back 9 m from him, all goal-side and to his right.
+        let s = Scenario {
+            left_team: vec![
+                PlayerEntry::new(Role::GK, -1.0, 0.0),
+                PlayerEntry::new(Role::CB, -0.5, 0.0),
+                PlayerEntry::new(Role::RB, -0.5, 0.1),
+            ],
+            right_team: vec![PlayerEntry::new(Role::GK, -1.0, 0.0), PlayerEntry::new(Role::CF, -0.5, 0.0)],
+            ..Scenario::default()
+        };
+        let mut m = Match::new(&s, 0, 0);
+        let carrier = Vec2::new(-HALF_LENGTH + 12.0, 0.0);
+        let at = [(-HALF_LENGTH + 7.0, 3.0), (-HALF_LENGTH + 8.0, 7.0), (-HALF_LENGTH + 9.0, 9.0)];
+        for (p, (x, y)) in m.players[0..3].iter_mut().zip(at) {
+            p.position = Vec2::new(x, y);
+            p.velocity = Vec2::ZERO;
+        }
+        m.players[4].position = carrier;
+        m.players[4].velocity = Vec2::ZERO;
+        m.owner = Some(4);
+        let view = crate::ai::test_view(&m);
+        let difficulty = Difficulty::new(1.0);
+        let hunters: Vec<usize> = (1..3).filter(|&g| hunts(&view, g, 4, &difficulty)).collect();
+        assert_eq!(hunters, vec![1], "the centre back hunts; the right back, third nearest, holds");
     }
 
     #[test]

@@ -209,7 +209,7 @@ mod tests {
         use crate::game::Match;
         use crate::scenario::{PlayerEntry, Scenario};
         // Their carrier 12 m from our goal (we defend -x); our keeper 6 m from him, a centre
-        // back 8 m and a right back 9 m from him, all goal-side and to his right.
+        // back 8 m and a right back 9.5 m from him, all goal-side and to his right.
         let s = Scenario {
             left_team: vec![
                 PlayerEntry::new(Role::GK, -1.0, 0.0),

@@ -64,7 +64,6 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
     let ball = view.ball.xy();
     let ball_t = frame.vec2(ball);
     let me_t = frame.vec2(me.position);
-    let goal_t = OWN_GOAL;
     // When and where he can meet the ball, as the team AI reckons its outfield players' times.
     let (t_keeper, meet) = analysis.path.intercept(me.position, me.max_speed * 0.9, 1.0);
 
@@ -144,10 +143,10 @@ pub fn plan(view: &MatchView, g: usize, analysis: &Analysis, _difficulty: &Diffi
     // Positioning on the ball–goal line, a little in front of the goal line; with his team on the
     // ball he stands up to 30 % of the way out to it (GRF's keeper positioning).
     let ours = view.owner_side() == Some(me.side);
-    let to_ball = ball_t - goal_t;
+    let to_ball = ball_t - OWN_GOAL;
     let dist = to_ball.length();
     let depth = KEEPER_LINE + if ours { OUT_IN_POSSESSION * (dist - 0.5).max(0.0) } else { 0.0 };
-    let target_t = goal_t + to_ball.normalize_or(Vec2::X) * depth.min(dist * 0.5).max(KEEPER_LINE.min(dist));
+    let target_t = OWN_GOAL + to_ball.normalize_or(Vec2::X) * depth.min(dist * 0.5).max(KEEPER_LINE.min(dist));
     let target = frame.vec2(target_t);
     // GRF's keeper moves at a pace that grows with the distance to his spot, up to a sprint.
     let speed = (target.distance(me.position) * 3.0).min(me.max_speed);
@@ -203,10 +202,9 @@ fn line_point(from_t: Vec2) -> Vec2 {
 /// to it: on his line to goal, `threshold` from goal when he is `2 × threshold` out or further, and
 /// halfway to goal when nearer.
 fn shooting_point(at_t: Vec2, threshold: f32) -> (f32, Vec2) {
-    let goal_t = OWN_GOAL;
-    let d = at_t.distance(goal_t);
+    let d = at_t.distance(OWN_GOAL);
     let to_point = (d - threshold * (d / (2.0 * threshold)).min(1.0)).clamp(0.0, HALF_LENGTH);
-    (to_point, at_t + (goal_t - at_t).normalize_or_zero() * to_point)
+    (to_point, at_t + (OWN_GOAL - at_t).normalize_or_zero() * to_point)
 }
 
 /// How far keeper `g`'s team-mate nearest to `point` (team frame) will be from it shortly (m);
@@ -234,9 +232,8 @@ fn rush_bias(view: &MatchView, g: usize, frame: TeamFrame, threat: &Player) -> f
     if nearest_mate_to(view, g, frame, point) <= threat_to_point + 1.0 {
         return 0.0;
     }
-    let goal_t = OWN_GOAL;
     let helper = view.team(threat.side).iter().filter(|p| p.active && p.index != threat.index).min_by(|a, b| {
-        frame.vec2(a.position).distance_squared(goal_t).total_cmp(&frame.vec2(b.position).distance_squared(goal_t))
+        frame.vec2(a.position).distance_squared(OWN_GOAL).total_cmp(&frame.vec2(b.position).distance_squared(OWN_GOAL))
     });
     let Some(helper) = helper else { return 1.0 };
     let helper_t = frame.vec2(helper.position + helper.velocity * OPPONENT_AHEAD);
